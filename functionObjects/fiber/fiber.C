@@ -1,0 +1,226 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fiber.H"
+#include "spheroidResistance.H"
+#include "mathematicalConstants.H"
+
+using namespace Foam::constant::mathematical;
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fiber::calcProperties()
+{
+    const label n = l_.size();
+
+    mSeg_.setSize(n);
+    kAx_.setSize(n);
+    kAp_.setSize(n);
+    kCx_.setSize(n);
+    kCp_.setSize(n);
+    kH_.setSize(n);
+
+    m_ = 0;
+    I0_ = Zero;
+
+    for (label i = 0; i < n; ++i)
+    {
+        const scalar l = l_[i];
+        const scalar d = d_[i];
+        const scalar mi = rho_[i]*pi*sqr(d)*l/4;
+        mSeg_[i] = mi;
+        m_ += mi;
+
+        // Eq. 4: segment about its own centre
+        const symmTensor zz(sqr(z0_[i]));
+        const symmTensor Ii =
+            (mi*sqr(d)/8)*zz
+          + (mi*sqr(d)/16 + mi*sqr(l)/12)*(symmTensor::I - zz);
+
+        // Eq. 5: parallel-axis theorem about the centre of mass
+        const vector& r = s0_[i];
+        I0_ += Ii + mi*((r & r)*symmTensor::I - sqr(r));
+
+        // Eq. 8-11 with a = l/2
+        const scalar re = spheroidResistance::coxAspectRatio(l/d);
+        const spheroidResistance res(re);
+        const scalar a = l/2;
+        kAx_[i] = 6*pi*a*res.XA;
+        kAp_[i] = 6*pi*a*res.YA;
+        kCx_[i] = 8*pi*pow3(a)*res.XC;
+        kCp_[i] = 8*pi*pow3(a)*res.YC;
+        kH_[i] = 8*pi*pow3(a)*res.YH;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fiber::fiber
+(
+    const label id,
+    const vectorList& centres,
+    const vectorList& directions,
+    const scalarList& lengths,
+    const scalarList& diameters,
+    const scalarList& densities,
+    const vector& referenceDirection
+)
+:
+    id_(id),
+    s0_(centres),
+    z0_(directions),
+    l_(lengths),
+    d_(diameters),
+    rho_(densities),
+    p0_(referenceDirection/mag(referenceDirection)),
+    mSeg_(),
+    m_(0),
+    I0_(Zero),
+    x_(Zero),
+    q_(quaternion::I),
+    v_(Zero),
+    omega_(Zero),
+    cell_(-1),
+    segCells_(lengths.size(), -1)
+{
+    forAll(z0_, i)
+    {
+        z0_[i] /= mag(z0_[i]);
+    }
+
+    // Eq. 1: centre of mass
+    scalar m = 0;
+    vector mr(Zero);
+    forAll(s0_, i)
+    {
+        const scalar mi = rho_[i]*pi*sqr(d_[i])*l_[i]/4;
+        m += mi;
+        mr += mi*s0_[i];
+    }
+    x_ = mr/m;
+    forAll(s0_, i)
+    {
+        s0_[i] -= x_;
+    }
+
+    calcProperties();
+}
+
+
+Foam::fiber Foam::fiber::straight
+(
+    const label id,
+    const point& centre,
+    const vector& direction,
+    const label nSegments,
+    const scalar segmentLength,
+    const scalar diameter,
+    const scalar density
+)
+{
+    const vector p(direction/mag(direction));
+    vectorList centres(nSegments);
+    forAll(centres, i)
+    {
+        centres[i] =
+            centre + (i - 0.5*(nSegments - 1))*segmentLength*p;
+    }
+
+    return fiber
+    (
+        id,
+        centres,
+        vectorList(nSegments, p),
+        scalarList(nSegments, segmentLength),
+        scalarList(nSegments, diameter),
+        scalarList(nSegments, density),
+        p
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fiber::length() const
+{
+    scalar ext = 0;
+    forAll(s0_, i)
+    {
+        ext = max(ext, mag(s0_[i]) + 0.5*l_[i]);
+    }
+    return 2*ext;
+}
+
+
+Foam::scalar Foam::fiber::minDiameter() const
+{
+    scalar dMin = GREAT;
+    forAll(d_, i)
+    {
+        dMin = min(dMin, d_[i]);
+    }
+    return dMin;
+}
+
+
+void Foam::fiber::segmentCentres(List<point>& pts) const
+{
+    const tensor Rt(R());
+    pts.setSize(s0_.size());
+    forAll(s0_, i)
+    {
+        pts[i] = x_ + (Rt & s0_[i]);
+    }
+}
+
+
+void Foam::fiber::setState
+(
+    const point& x,
+    const quaternion& q,
+    const vector& v,
+    const vector& omega
+)
+{
+    x_ = x;
+    q_ = normalize(q);
+    v_ = v;
+    omega_ = omega;
+}
+
+
+void Foam::fiber::move
+(
+    const vector& V,
+    const vector& omega,
+    const scalar dt
+)
+{
+    x_ += dt*V;
+
+    // Exact rotation by the angle |omega| dt about omega
+    const vector theta(dt*omega);
+    const scalar phi = mag(theta);
+    const scalar sinc =
+        phi < 1e-4
+      ? 0.5 - sqr(phi)/48
+      : ::sin(0.5*phi)/phi;
+    const quaternion dq(::cos(0.5*phi), sinc*theta);
+
+    q_ = normalize(dq*q_);
+    v_ = V;
+    omega_ = omega;
+}
+
+
+// ************************************************************************* //

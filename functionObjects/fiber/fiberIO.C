@@ -1,0 +1,63 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fiber.H"
+#include "IOstreams.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fiber::fiber(Istream& is)
+:
+    id_(readLabel(is)),
+    s0_(is),
+    z0_(is),
+    l_(is),
+    d_(is),
+    rho_(is),
+    p0_(is),
+    mSeg_(),
+    m_(0),
+    I0_(Zero),
+    x_(is),
+    q_(is),
+    v_(is),
+    omega_(is),
+    cell_(-1),
+    segCells_(l_.size(), -1)
+{
+    is.check(FUNCTION_NAME);
+    calcProperties();
+}
+
+
+// * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * * //
+
+Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
+{
+    os  << f.id_ << token::SPACE
+        << f.s0_ << token::SPACE
+        << f.z0_ << token::SPACE
+        << f.l_ << token::SPACE
+        << f.d_ << token::SPACE
+        << f.rho_ << token::SPACE
+        << f.p0_ << token::SPACE
+        << f.x_ << token::SPACE
+        << f.q_ << token::SPACE
+        << f.v_ << token::SPACE
+        << f.omega_;
+
+    os.check(FUNCTION_NAME);
+    return os;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,99 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fiberHydrodynamics.H"
+#include "inertialDrag.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fiberHydrodynamics::fiberHydrodynamics
+(
+    const scalar rhoFluid,
+    const bool inertial,
+    const scalar CD
+)
+:
+    rho_(rhoFluid),
+    inertial_(inertial),
+    CD_(CD)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fiberHydrodynamics::law
+(
+    const fiber& f,
+    const label i,
+    const tensor& R,
+    const fluidSample& s,
+    const vector& vOld,
+    const vector& omegaOld,
+    segmentLaw& k
+) const
+{
+    const vector z(f.segmentDirection(R, i));
+    const tensor zz(z*z);
+    const tensor Pp(tensor::I - zz);
+    const scalar mu = s.mu;
+    const vector Ez(s.E() & z);
+
+    // Viscous, Eq. 10-11
+    k.Kuu = mu*(f.kAx(i)*zz + f.kAp(i)*Pp);
+    k.Kww = mu*(f.kCx(i)*zz + f.kCp(i)*Pp);
+    k.Kuw = Zero;
+    k.Kwu = Zero;
+    k.f0 = Zero;
+    k.t0 = (mu*f.kH(i))*(z ^ Ez);
+
+    if (!inertial_)
+    {
+        return;
+    }
+
+    // Inertial cross-flow drag, Eq. 12-13, linearised about the old state
+    const vector a(Pp & (s.U - vOld));
+    const vector b(((s.Omega() - omegaOld) ^ z) + (Pp & Ez));
+
+    scalar M0, M1, M2;
+    inertialDrag::moments(a, b, f.segmentLength(i), M0, M1, M2);
+
+    const scalar c = 0.5*rho_*CD_*f.segmentDiameter(i);
+    const tensor Z(crossMatrix(z));
+
+    k.Kuu += (c*M0)*Pp;
+    k.Kww += (c*M2)*Pp;
+    k.Kuw -= (c*M1)*Z;
+    k.Kwu += (c*M1)*Z;
+    k.f0 += (c*M1)*(Pp & Ez);
+    k.t0 += (c*M2)*(z ^ Ez);
+}
+
+
+void Foam::fiberHydrodynamics::evaluate
+(
+    const segmentLaw& k,
+    const fluidSample& s,
+    const vector& v,
+    const vector& omega,
+    vector& F,
+    vector& T
+)
+{
+    const vector du(s.U - v);
+    const vector dw(s.Omega() - omega);
+    F = (k.Kuu & du) + (k.Kuw & dw) + k.f0;
+    T = (k.Kwu & du) + (k.Kww & dw) + k.t0;
+}
+
+
+// ************************************************************************* //
