@@ -207,6 +207,13 @@ void Foam::fiberCloud::relocate()
 
     nEscaped_ += returnReduce(nEscaped, sumOp<label>());
 
+    label nSend = 0;
+    forAll(sendFibers, proci)
+    {
+        nSend += sendFibers[proci].size();
+    }
+    nTransferred_ = returnReduce(nSend, sumOp<label>());
+
     PstreamBuffers buf(Pstream::commsTypes::nonBlocking);
     if (Pstream::parRun())
     {
@@ -258,21 +265,7 @@ void Foam::fiberCloud::relocate()
                 fiber* fPtr = new fiber(is);
 
                 // Continue the walk from the matching face
-                label procPatchi = -1;
-                forAll(mesh_.boundaryMesh(), patchi)
-                {
-                    const polyPatch& pp = mesh_.boundaryMesh()[patchi];
-                    if
-                    (
-                        isA<processorPolyPatch>(pp)
-                     && refCast<const processorPolyPatch>(pp).neighbProcNo()
-                     == proci
-                    )
-                    {
-                        procPatchi = patchi;
-                        break;
-                    }
-                }
+                const label procPatchi = sampler_.processorPatch(proci);
                 label celli =
                     mesh_.boundaryMesh()[procPatchi].faceCells()[patchFace];
                 label hitFace = -1;
@@ -321,7 +314,10 @@ Foam::fiberCloud::fiberCloud
     nInjected_(0),
     nEscaped_(0),
     nSubMax_(0),
-    dtSubMin_(0)
+    dtSubMin_(0),
+    nRemote_(0),
+    nTransferred_(0),
+    nOutside_(0)
 {
     const dictionary& injectionDict = dict.subDict("injection");
 
@@ -357,6 +353,7 @@ void Foam::fiberCloud::evolve(const scalar dt)
 
     label nRounds = 1;
     nSubMax_ = 1;
+    sampler_.resetCounters();
     dtSubMin_ = dt;
 
     for (label round = 0; round < nRounds; ++round)
@@ -412,7 +409,9 @@ void Foam::fiberCloud::evolve(const scalar dt)
                         << " (shear rate " << gammaDot << ")"
                         << exit(FatalError);
                 }
-                nSub[fi] = max(1, label(std::ceil(steps)));
+                // Round-off tolerant: a step count that is an integer up to
+                // round-off (uniform shear) must not flip to the next one
+                nSub[fi] = max(1, label(std::ceil(steps*(1 - 1e-9))));
                 nMax = max(nMax, nSub[fi]);
             }
             nRounds = returnReduce(nMax, maxOp<label>());
@@ -448,6 +447,9 @@ void Foam::fiberCloud::evolve(const scalar dt)
             );
         }
     }
+
+    nRemote_ = returnReduce(sampler_.nRemote(), sumOp<label>());
+    nOutside_ = returnReduce(sampler_.nOutside(), sumOp<label>());
 
     relocate();
 }

@@ -110,7 +110,7 @@ void Foam::fiberInjection::checkSegment
             << "Segment aspect ratio segmentLength/diameter = " << rc
             << " is below " << spheroidResistance::rcMin << "." << nl
             << "    Cox's equivalent aspect ratio (Eq. 8) is a slender-body"
-            << " fit: it exceeds l/d below 4.7 and" << nl
+            << " fit: it exceeds l/d below 4.65 and" << nl
             << "    is not monotonic below 1.65, so the segment drag would"
             << " be meaningless." << nl
             << "    Use fewer, longer segments (reduce 'nSegments' and raise"

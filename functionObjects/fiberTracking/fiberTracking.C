@@ -105,6 +105,15 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
 
+    if (cloud_.valid())
+    {
+        // A re-read (modified controlDict) must not re-inject the fibers
+        Info<< type() << " " << name() << ": dictionary changed; the fiber"
+            << " settings are read once, restart the run to change them"
+            << endl;
+        return true;
+    }
+
     Info<< type() << " " << name() << ":" << nl;
 
     UName_ = dict.getOrDefault<word>("U", "U");
@@ -233,7 +242,18 @@ bool Foam::functionObjects::fiberTracking::execute()
 
     Log << type() << " " << name() << " execute: fiber time " << fiberTime_
         << ", sub-steps " << cloud_->nSubMax()
-        << " (smallest " << cloud_->dtSubMin() << " s)" << endl;
+        << " (smallest " << cloud_->dtSubMin() << " s)";
+    if (Pstream::parRun())
+    {
+        Log << ", remote segment samples " << cloud_->nRemote()
+            << ", fibers transferred " << cloud_->nTransferred();
+    }
+    if (cloud_->nOutside())
+    {
+        Log << ", segment samples outside the mesh " << cloud_->nOutside()
+            << " (fluid data of the last cell reached)";
+    }
+    Log << endl;
 
     return true;
 }

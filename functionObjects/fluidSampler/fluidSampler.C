@@ -24,7 +24,9 @@ Foam::fluidSampler::fluidSampler(const fvMesh& mesh, const word& scheme)
     procPatch_(),
     UInterp_(),
     gradUInterp_(),
-    mu_()
+    mu_(),
+    nRemote_(0),
+    nOutside_(0)
 {
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     forAll(pbm, patchi)
@@ -63,6 +65,10 @@ Foam::fluidSample Foam::fluidSampler::sampleLocal
         mu_[celli]
     );
     s.inside = inside;
+    if (!inside)
+    {
+        ++nOutside_;
+    }
     return s;
 }
 
@@ -330,6 +336,7 @@ void Foam::fluidSampler::sample
 
     if (Pstream::parRun())
     {
+        nRemote_ += remoteIndex.size();
         exchange(remoteProc, remoteFace, pts, remoteIndex, out);
     }
 }

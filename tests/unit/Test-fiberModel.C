@@ -1,0 +1,702 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+Application
+    Test-fiberModel
+
+Description
+    Unit tests of the fiber model classes, without a mesh or a solver.
+    Every check compares a number with an independent reference (closed
+    form, limit, exact discrete solution or quadrature) and prints
+    'PASS: <name> (<detail>)' or 'FAIL: <name> (<detail>)'.  The exit code
+    is the number of failures.
+
+\*---------------------------------------------------------------------------*/
+
+#include "spheroidResistance.H"
+#include "inertialDrag.H"
+#include "fiber.H"
+#include "fiberHydrodynamics.H"
+#include "fiberIntegrator.H"
+#include "mathematicalConstants.H"
+#include "IOstreams.H"
+
+#include <cmath>
+#include <sstream>
+
+using namespace Foam;
+using namespace Foam::constant::mathematical;
+
+// * * * * * * * * * * * * * * * * Harness  * * * * * * * * * * * * * * * * //
+
+static label nPass = 0;
+static label nFail = 0;
+
+void check(const std::string& name, const bool ok, const std::string& detail)
+{
+    Info<< (ok ? "PASS: " : "FAIL: ") << name.c_str() << " ("
+        << detail.c_str() << ")" << endl;
+    ok ? ++nPass : ++nFail;
+}
+
+scalar relErr(const scalar a, const scalar b)
+{
+    return mag(a - b)/max(mag(b), VSMALL);
+}
+
+std::string fmt(const scalar a, const scalar b, const scalar err)
+{
+    std::ostringstream os;
+    os.precision(10);
+    os << "got " << a << ", reference " << b << ", rel. error " << err;
+    return os.str();
+}
+
+
+// * * * * * * * * * * * * * * Analytic flows  * * * * * * * * * * * * * * //
+
+//- Linear flow u = U0 + G (x - x0) of viscosity mu
+struct linearFlow
+{
+    vector U0;
+    tensor G;
+    point x0;
+    scalar mu;
+
+    void sample(const fiber& f, List<fluidSample>& s) const
+    {
+        List<point> pts;
+        f.segmentCentres(pts);
+        s.setSize(pts.size());
+        forAll(pts, i)
+        {
+            s[i] = fluidSample(U0 + (G & (pts[i] - x0)), G, mu);
+        }
+    }
+};
+
+
+//- Simple shear u = gammaDot (y - y0) e_x
+linearFlow shear(const scalar gammaDot, const scalar mu)
+{
+    tensor G(Zero);
+    G.xy() = gammaDot;
+    return linearFlow{Zero, G, Zero, mu};
+}
+
+
+//- Cox's r_e written out independently of the library
+scalar coxRe(const scalar rc)
+{
+    return 1.24*rc/std::sqrt(std::log(rc));
+}
+
+
+//- Angle of p in the shear plane, from the gradient axis towards the flow
+scalar shearAngle(const vector& p)
+{
+    return std::atan2(p.x(), p.y());
+}
+
+
+//- Integrate fiber f in the flow for nSteps of dt; return the time of the
+//  first full 2 pi turn of p (linear interpolation), -1 if none
+scalar period
+(
+    fiber& f,
+    const linearFlow& flow,
+    const fiberIntegrator& integ,
+    const fiberHydrodynamics& hydro,
+    const scalar dt,
+    const label nSteps
+)
+{
+    List<fluidSample> s;
+    const scalar phi0 = shearAngle(f.orientation());
+    scalar phiPrev = phi0;
+    scalar unwrapped = phi0;
+    scalar T = -1;
+    for (label n = 1; n <= nSteps; ++n)
+    {
+        flow.sample(f, s);
+        integ.advance(f, s, hydro, Zero, dt);
+        const scalar phi = shearAngle(f.orientation());
+        scalar dphi = phi - phiPrev;
+        if (dphi > pi) dphi -= twoPi;
+        if (dphi < -pi) dphi += twoPi;
+        const scalar next = unwrapped + dphi;
+        if (T < 0 && next >= phi0 + twoPi)
+        {
+            const scalar frac = (phi0 + twoPi - unwrapped)/dphi;
+            T = (n - 1 + frac)*dt;
+        }
+        unwrapped = next;
+        phiPrev = phi;
+    }
+    return T;
+}
+
+
+//- Period of a straight chain of N spheroid segments from the inertia-free
+//  torque balance (docs/model.md): B = (N h + A S2)/(N c + A S2)
+scalar chainPeriod
+(
+    const label N,
+    const scalar L,
+    const scalar d,
+    const scalar gammaDot
+)
+{
+    const scalar l = L/N;
+    const scalar a = l/2;
+    const spheroidResistance res(coxRe(l/d));
+    const scalar A = 6*pi*a*res.YA;
+    const scalar c = 8*pi*pow3(a)*res.YC;
+    const scalar h = 8*pi*pow3(a)*res.YH;
+    const scalar S2 = sqr(l)*N*(scalar(N)*N - 1)/12.0;
+    const scalar B = (N*h + A*S2)/(N*c + A*S2);
+    const scalar r = std::sqrt((1 + B)/(1 - B));
+    return spheroidResistance::jefferyPeriod(r, gammaDot);
+}
+
+
+// * * * * * * * * * * * * * * * * * Tests  * * * * * * * * * * * * * * * * //
+
+void testResistance()
+{
+    // Sphere limit: all functions -> 1, Y^H -> 0 (physics.md 1.4)
+    {
+        const spheroidResistance s(1 + 1e-12);
+        const scalar err = max
+        (
+            max(mag(s.XA - 1), mag(s.YA - 1)),
+            max(max(mag(s.XC - 1), mag(s.YC - 1)), mag(s.YH))
+        );
+        check("resistance.sphereLimit", err < 1e-10, fmt(err, 0, err));
+    }
+
+    // Series and closed form meet at e = 0.01 (absolute: the functions
+    // are O(1), Y^H is O(e^2) and its change over the 2e-9 step in e is
+    // 2e-11)
+    {
+        const scalar rBelow = 1/std::sqrt(1 - sqr(0.01 - 1e-9));
+        const scalar rAbove = 1/std::sqrt(1 - sqr(0.01 + 1e-9));
+        const spheroidResistance a(rBelow), b(rAbove);
+        const scalar err = max
+        (
+            max(mag(a.XA - b.XA), mag(a.YA - b.YA)),
+            max(max(mag(a.XC - b.XC), mag(a.YC - b.YC)), mag(a.YH - b.YH))
+        );
+        check("resistance.seriesContinuity", err < 1e-9, fmt(err, 0, err));
+    }
+
+    // Slender limit (physics.md 1.5): errors O(ln r / r^2)
+    {
+        const scalar r = 1e4;
+        const spheroidResistance s(r);
+        const scalar l2r = std::log(2*r);
+        const scalar err = max
+        (
+            max
+            (
+                relErr(s.XA, (4.0/3.0)/(2*l2r - 1)),
+                relErr(s.YA, (8.0/3.0)/(2*l2r + 1))
+            ),
+            max
+            (
+                max
+                (
+                    relErr(s.YC, (2.0/3.0)/(2*l2r - 1)),
+                    relErr(s.XC, 2/(3*sqr(r)))
+                ),
+                relErr(s.YH/s.YC, 1)
+            )
+        );
+        check("resistance.slenderLimit", err < 1e-6, fmt(err, 0, err));
+    }
+
+    // Worked example physics.md 8.1 (r_c = 10): Y^A, Y^C, Y^H, X^A, X^C
+    {
+        const spheroidResistance s(coxRe(10));
+        const scalar err = max
+        (
+            max(relErr(s.XA, 0.286743), relErr(s.YA, 0.404356)),
+            max
+            (
+                max(relErr(s.XC, 0.010266), relErr(s.YC, 0.145519)),
+                relErr(s.YH, 0.141225)
+            )
+        );
+        check("resistance.workedExample", err < 5e-5, fmt(err, 0, err));
+    }
+
+    // Bretherton: Y^H/Y^C = (r^2 - 1)/(r^2 + 1) exactly
+    for (const scalar r : {1.5, 3.0, 10.0, 31.3466, 1000.0})
+    {
+        const spheroidResistance s(r);
+        const scalar ref = (sqr(r) - 1)/(sqr(r) + 1);
+        const scalar err = relErr(s.YH/s.YC, ref);
+        std::ostringstream nm;
+        nm << "resistance.brethertonRatio r=" << r;
+        check(nm.str(), err < 1e-10, fmt(s.YH/s.YC, ref, err));
+    }
+}
+
+
+void testBrethertonTorqueBalance()
+{
+    // One spheroid segment (l/d = 50), negligible inertia, one implicit
+    // step in a general linear flow: the rotation rate must be Jeffery's
+    // p' = W p + B (E p - (p.E p) p), B from Cox's r_e.
+    const scalar l = 1e-3, d = 2e-5;
+    const vector p0(vector(0.3, 0.8, 0.52)/mag(vector(0.3, 0.8, 0.52)));
+    fiber f(fiber::straight(0, Zero, p0, 1, l, d, 1e-9));
+
+    tensor G(1.0, 40.0, -3.0, 7.0, -2.0, 5.0, 11.0, -6.0, 1.0);
+    G = 10*G;
+    const linearFlow flow{Zero, G, Zero, 1.6};
+    const fiberHydrodynamics hydro(1260, false, 1);
+    dictionary dict;
+    dict.add("integrator", "implicitEuler");
+    autoPtr<fiberIntegrator> integ(fiberIntegrator::New(dict));
+
+    List<fluidSample> s;
+    flow.sample(f, s);
+    integ->advance(f, s, hydro, Zero, 1e-3);
+
+    const vector pdot(f.omega() ^ p0);
+    const symmTensor E(symm(G));
+    const tensor W(skew(G));
+    const scalar re = coxRe(l/d);
+    const scalar B = (sqr(re) - 1)/(sqr(re) + 1);
+    const vector Ep(E & p0);
+    const vector ref((W & p0) + B*(Ep - (p0 & Ep)*p0));
+    const scalar err = mag(pdot - ref)/mag(ref);
+    check
+    (
+        "resistance.brethertonTorqueBalance",
+        err < 1e-9,
+        fmt(mag(pdot), mag(ref), err)
+    );
+}
+
+
+scalar quadrature
+(
+    const vector& a,
+    const vector& b,
+    const scalar l,
+    const label k
+)
+{
+    // Composite Simpson, split at the point of smallest |a + s b| so each
+    // piece is smooth
+    const scalar h = l/2;
+    List<scalar> cuts({-h, h});
+    const scalar bb = magSqr(b);
+    if (bb > 0)
+    {
+        const scalar s0 = -(a & b)/bb;
+        if (s0 > -h && s0 < h)
+        {
+            cuts = List<scalar>({-h, s0, h});
+        }
+    }
+    scalar sum = 0;
+    const label n = 20000;
+    for (label c = 0; c + 1 < cuts.size(); ++c)
+    {
+        const scalar lo = cuts[c], hi = cuts[c + 1];
+        const scalar dx = (hi - lo)/n;
+        for (label j = 0; j <= n; ++j)
+        {
+            const scalar s = lo + j*dx;
+            const scalar w = (j == 0 || j == n) ? 1 : (j % 2 ? 4 : 2);
+            sum += w*std::pow(s, k)*mag(a + s*b)*dx/3;
+        }
+    }
+    return sum;
+}
+
+
+void testInertialDrag()
+{
+    const scalar l = 2e-4;
+    struct caseAB { const char* name; vector a; vector b; };
+    const List<caseAB> cases
+    ({
+        {"translation", vector(0.3, -0.2, 0), vector(0, 0, 0)},
+        {"rotation", vector(0, 0, 0), vector(800, 300, 0)},
+        {"signChangeInside", vector(0.05, 0.01, 0), vector(-900, -100, 0)},
+        {"exactZeroCrossing", vector(0.04, 0, 0), vector(-1000, 0, 0)},
+        {"noSignChange", vector(0.3, 0.1, 0), vector(-1500, 900, 0)},
+        {"smallGradientSeries", vector(0.3, 0.1, 0), vector(200, -700, 0)},
+        {"skew3D", vector(0.02, -0.07, 0.01), vector(300, 500, -800)}
+    });
+
+    for (const caseAB& c : cases)
+    {
+        scalar M[3];
+        inertialDrag::moments(c.a, c.b, l, M[0], M[1], M[2]);
+        const scalar scale0 = mag(c.a)*l + mag(c.b)*sqr(l);
+        scalar err = 0;
+        for (label k = 0; k < 3; ++k)
+        {
+            const scalar q = quadrature(c.a, c.b, l, k);
+            err = max(err, mag(M[k] - q)/(scale0*std::pow(l, k)));
+        }
+        check
+        (
+            std::string("inertialDrag.closedFormVsQuadrature.") + c.name,
+            err < 1e-9,
+            fmt(err, 0, err)
+        );
+    }
+
+    // Pure translation and pure rotation closed forms (physics.md 3.4)
+    {
+        const vector a(0.3, -0.2, 0);
+        scalar M0, M1, M2;
+        inertialDrag::moments(a, Zero, l, M0, M1, M2);
+        const scalar err = max
+        (
+            relErr(M0, l*mag(a)),
+            max(relErr(M2, pow3(l)*mag(a)/12), mag(M1)/(sqr(l)*mag(a)))
+        );
+        check("inertialDrag.pureTranslation", err < 1e-12, fmt(err, 0, err));
+    }
+    {
+        const vector b(800, 300, 0);
+        scalar M0, M1, M2;
+        inertialDrag::moments(Zero, b, l, M0, M1, M2);
+        const scalar err = max
+        (
+            relErr(M0, mag(b)*sqr(l)/4),
+            relErr(M2, mag(b)*pow4(l)/32)
+        );
+        check("inertialDrag.pureRotation", err < 1e-12, fmt(err, 0, err));
+    }
+
+    // Force of a segment in uniform cross-flow: rho C_D d l |a| a / 2
+    {
+        const scalar d = 2e-5, rho = 1.2, CD = 1;
+        fiber f(fiber::straight(0, Zero, vector(0, 0, 1), 1, l, d, 1380));
+        const fiberHydrodynamics hydro(rho, true, CD);
+        const fluidSample s(vector(3, 4, 0), Zero, 1.8e-5);
+        fiberHydrodynamics::segmentLaw k;
+        hydro.law(f, 0, f.R(), s, Zero, Zero, k);
+        const fiberHydrodynamics viscousOnly(rho, false, CD);
+        fiberHydrodynamics::segmentLaw kv;
+        viscousOnly.law(f, 0, f.R(), s, Zero, Zero, kv);
+        vector F, T, Fv, Tv;
+        fiberHydrodynamics::evaluate(k, s, Zero, Zero, F, T);
+        fiberHydrodynamics::evaluate(kv, s, Zero, Zero, Fv, Tv);
+        const vector ref(0.5*rho*CD*d*l*mag(s.U)*s.U);
+        const scalar err = mag((F - Fv) - ref)/mag(ref);
+        check
+        (
+            "inertialDrag.segmentCrossFlowForce",
+            err < 1e-12,
+            fmt(mag(F - Fv), mag(ref), err)
+        );
+    }
+}
+
+
+void testInertia()
+{
+    const label N = 5;
+    const scalar l = 2e-4, d = 2e-5, rho = 1380;
+    const scalar L = N*l;
+    const vector p(vector(1, 2, 3)/mag(vector(1, 2, 3)));
+    fiber f(fiber::straight(0, vector(1, 2, 3), p, N, l, d, rho));
+
+    const scalar m = rho*pi*sqr(d)/4*L;
+    const scalar Iperp = m*(sqr(L)/12 + sqr(d)/16);
+    const scalar Ipar = m*sqr(d)/8;
+    const symmTensor ref(Ipar*sqr(p) + Iperp*(symmTensor::I - sqr(p)));
+    const symmTensor I(f.inertia(f.R()));
+    const scalar err = mag(I - ref)/mag(ref);
+    check("inertia.straightChainVsCylinder", err < 1e-12, fmt(err, 0, err));
+    check
+    (
+        "inertia.mass",
+        relErr(f.mass(), m) < 1e-14,
+        fmt(f.mass(), m, relErr(f.mass(), m))
+    );
+    check
+    (
+        "inertia.centreOfMass",
+        mag(f.position() - vector(1, 2, 3)) < 1e-14,
+        fmt(mag(f.position() - vector(1, 2, 3)), 0, 0)
+    );
+}
+
+
+void testRelaxation()
+{
+    // One segment at rest released in a uniform flow (physics.md 6):
+    // tau_perp = m/(3 pi mu l Y^A); implicit Euler gives exactly
+    // v_n/u = 1 - (1 + dt/tau)^-n
+    const scalar l = 2e-4, d = 2e-5, rho = 1380, mu = 1.8e-5;
+    const vector p(0, 0, 1);
+    const vector u(1, 0, 0);
+    const spheroidResistance res(coxRe(l/d));
+    const scalar m = rho*pi*sqr(d)/4*l;
+    const scalar tau = m/(3*pi*mu*l*res.YA);
+
+    check
+    (
+        "relaxation.tauWorkedExample",
+        relErr(tau, 6.32e-3) < 1e-3,
+        fmt(tau, 6.32e-3, relErr(tau, 6.32e-3))
+    );
+
+    const fiberHydrodynamics hydro(1.2, false, 1);
+    dictionary dict;
+    dict.add("integrator", "implicitEuler");
+    autoPtr<fiberIntegrator> integ(fiberIntegrator::New(dict));
+    const linearFlow flow{u, Zero, Zero, mu};
+
+    for (const scalar z : {1e-2, 1e-1, 1.0, 10.0, 1e2, 1e4, 1e6, 1e8})
+    {
+        fiber f(fiber::straight(0, Zero, p, 1, l, d, rho));
+        const scalar dt = z*tau;
+        const label n = max(3, label(std::ceil(1/z)));
+        List<fluidSample> s;
+        bool bounded = true;
+        scalar prev = 0;
+        for (label k = 0; k < n; ++k)
+        {
+            flow.sample(f, s);
+            integ->advance(f, s, hydro, Zero, dt);
+            const scalar v = f.velocity().x();
+            bounded = bounded && v >= prev && v <= 1 + 1e-12
+                && mag(f.velocity().y()) + mag(f.velocity().z()) < 1e-12
+                && mag(f.omega()) < 1e-12;
+            prev = v;
+        }
+        const scalar vx = f.velocity().x();
+        const scalar exactDiscrete = 1 - std::pow(1 + z, -n);
+        const scalar errDiscrete = mag(vx - exactDiscrete);
+        const scalar exact = 1 - std::exp(-n*z);
+        const scalar errExact = mag(vx - exact);
+
+        std::ostringstream nm;
+        nm << "relaxation.dtOverTau=" << z;
+        check
+        (
+            nm.str() + ".exactDiscrete",
+            errDiscrete < 1e-12,
+            fmt(vx, exactDiscrete, errDiscrete)
+        );
+        check(nm.str() + ".boundedMonotone", bounded, "0 <= v <= u, no spin");
+        if (z <= 0.1)
+        {
+            // first-order error bound |(1+z)^-n - e^-nz| <= n z^2/2
+            check
+            (
+                nm.str() + ".vsAnalytic",
+                errExact <= n*sqr(z)/2,
+                fmt(vx, exact, errExact)
+            );
+        }
+    }
+}
+
+
+void testGravity()
+{
+    // One heavy segment settling in quiescent air, oblique to gravity:
+    // terminal velocity v = m A^-1 g with
+    // A = 6 pi mu a (X^A pp + Y^A (I - pp)), a = l/2; no rotation
+    const scalar l = 2e-4, d = 2e-5, rho = 1380, mu = 1.8e-5;
+    const vector p(vector(1, 1, 1)/std::sqrt(3.0));
+    const vector g(0, -9.81, 0);
+    fiber f(fiber::straight(0, Zero, p, 1, l, d, rho));
+
+    const spheroidResistance res(coxRe(l/d));
+    const scalar a = l/2;
+    const scalar m = rho*pi*sqr(d)/4*l;
+    const vector gPar((g & p)*p);
+    const vector ref
+    (
+        m*gPar/(6*pi*mu*a*res.XA) + m*(g - gPar)/(6*pi*mu*a*res.YA)
+    );
+
+    const fiberHydrodynamics hydro(1.2, false, 1);
+    dictionary dict;
+    dict.add("integrator", "implicitEuler");
+    autoPtr<fiberIntegrator> integ(fiberIntegrator::New(dict));
+    const linearFlow still{Zero, Zero, Zero, mu};
+    List<fluidSample> s;
+    for (label k = 0; k < 60; ++k)
+    {
+        still.sample(f, s);
+        integ->advance(f, s, hydro, g, 1e-2);
+    }
+    const scalar err = mag(f.velocity() - ref)/mag(ref);
+    check
+    (
+        "gravity.terminalVelocityObliqueSegment",
+        err < 1e-10 && mag(f.omega()) < 1e-12,
+        fmt(mag(f.velocity()), mag(ref), err)
+    );
+}
+
+
+void testJefferyAndRigidity()
+{
+    const scalar L = 1e-3, d = 2e-5, rho = 1380, mu = 1.6, gammaDot = 200;
+    const linearFlow flow(shear(gammaDot, mu));
+    const fiberHydrodynamics hydro(1260, false, 1);
+    dictionary dict;
+    dict.add("integrator", "implicitEuler");
+    autoPtr<fiberIntegrator> integ(fiberIntegrator::New(dict));
+    const scalar dt = 1e-5;
+    const label nSteps = 120000;
+
+    // Tolerance 1e-5: the scheme is first order with gammaDot dt = 2e-3,
+    // but the errors of the two symmetric half-turns cancel, leaving
+    // O((gammaDot dt)^2) = 4e-6 in the period.
+
+    // One segment: Jeffery with Cox's r_e of the whole fiber
+    {
+        fiber f(fiber::straight(0, Zero, vector(0, 1, 0), 1, L, d, rho));
+        const scalar T = period(f, flow, integ(), hydro, dt, nSteps);
+        const scalar re = coxRe(L/d);
+        const scalar ref = twoPi*(re + 1/re)/gammaDot;
+        check
+        (
+            "jeffery.analyticShear.oneSegment",
+            relErr(T, ref) < 1e-5,
+            fmt(T, ref, relErr(T, ref))
+        );
+    }
+
+    // Five segments: chain period; then rigidity after 1e5+ steps
+    {
+        const label N = 5;
+        const scalar l = L/N;
+        fiber f(fiber::straight(0, Zero, vector(0, 1, 0), N, l, d, rho));
+        const scalar T = period(f, flow, integ(), hydro, dt, nSteps);
+        const scalar ref = chainPeriod(N, L, d, gammaDot);
+        check
+        (
+            "jeffery.analyticShear.chainOfFive",
+            relErr(T, ref) < 1e-5,
+            fmt(T, ref, relErr(T, ref))
+        );
+
+        List<point> pts;
+        f.segmentCentres(pts);
+        const tensor R(f.R());
+        scalar errLen = 0, errAngle = 0;
+        for (label i = 0; i + 1 < N; ++i)
+        {
+            errLen = max(errLen, relErr(mag(pts[i + 1] - pts[i]), l));
+            errAngle = max
+            (
+                errAngle,
+                mag
+                (
+                    (f.segmentDirection(R, i) & f.segmentDirection(R, i + 1))
+                  - 1
+                )
+            );
+        }
+        const scalar errUnit = mag(mag(f.orientation()) - 1);
+        const scalar errOrth = mag((R & R.T()) - tensor::I);
+        check
+        (
+            "rigidity.segmentLengths.120000steps",
+            errLen < 1e-12,
+            fmt(errLen, 0, errLen)
+        );
+        check
+        (
+            "rigidity.relativeAngles.120000steps",
+            errAngle < 1e-12,
+            fmt(errAngle, 0, errAngle)
+        );
+        check
+        (
+            "rigidity.unitOrientation.120000steps",
+            errUnit < 1e-12 && errOrth < 1e-12,
+            fmt(errUnit, errOrth, errUnit)
+        );
+    }
+
+    // Stiff steps: the five-segment Jeffery fiber (tau ~ 1e-7 s) with
+    // dt/tau up to 1e8 stays finite and bounded by the flow
+    {
+        const scalar tau = 1e-7;
+        for (const scalar z : {1e-2, 1.0, 1e2, 1e4, 1e6, 1e8})
+        {
+            fiber f
+            (
+                fiber::straight(0, Zero, vector(0, 1, 0), 5, L/5, d, rho)
+            );
+            List<fluidSample> s;
+            scalar vMax = 0, wMax = 0;
+            for (label k = 0; k < 200; ++k)
+            {
+                flow.sample(f, s);
+                integ->advance(f, s, hydro, Zero, z*tau);
+                vMax = max(vMax, mag(f.velocity()));
+                wMax = max(wMax, mag(f.omega()));
+            }
+            // centre at the zero-velocity line: |v| stays ~0; |omega| is
+            // at most gammaDot (rotation + strain rate of simple shear)
+            std::ostringstream nm;
+            nm << "stiff.jefferyFiber.dtOverTau=" << z;
+            const bool ok =
+                std::isfinite(vMax) && std::isfinite(wMax)
+             && vMax < 1e-9*gammaDot*L && wMax <= gammaDot*(1 + 1e-9);
+            std::ostringstream det;
+            det << "max|v| " << vMax << ", max|omega| " << wMax;
+            check(nm.str(), ok, det.str());
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
+
+int main()
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    try
+    {
+        testResistance();
+        testBrethertonTorqueBalance();
+        testInertialDrag();
+        testInertia();
+        testRelaxation();
+        testGravity();
+        testJefferyAndRigidity();
+    }
+    catch (const Foam::error& err)
+    {
+        Info<< "FAIL: unexpected OpenFOAM error: " << err.message().c_str()
+            << endl;
+        ++nFail;
+    }
+
+    Info<< "Test-fiberModel: " << nPass << " passed, " << nFail << " failed"
+        << endl;
+
+    return nFail;
+}
+
+
+// ************************************************************************* //
