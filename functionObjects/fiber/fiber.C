@@ -90,6 +90,9 @@ Foam::fiber::fiber
     q_(quaternion::I),
     v_(Zero),
     omega_(Zero),
+    psi_(Zero),
+    eddyTime_(0),
+    nDraws_(0),
     cell_(-1),
     segCells_(lengths.size(), -1)
 {

@@ -31,6 +31,9 @@ Foam::fiber::fiber(Istream& is)
     q_(is),
     v_(is),
     omega_(is),
+    psi_(is),
+    eddyTime_(readScalar(is)),
+    nDraws_(readLabel(is)),
     cell_(-1),
     segCells_(l_.size(), -1)
 {
@@ -53,7 +56,10 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
         << f.x_ << token::SPACE
         << f.q_ << token::SPACE
         << f.v_ << token::SPACE
-        << f.omega_;
+        << f.omega_ << token::SPACE
+        << f.psi_ << token::SPACE
+        << f.eddyTime_ << token::SPACE
+        << f.nDraws_;
 
     os.check(FUNCTION_NAME);
     return os;

@@ -14,6 +14,17 @@ License
 #include "PstreamBuffers.H"
 #include "processorPolyPatch.H"
 #include "ListOps.H"
+#include "wallPolyPatch.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::fiberCloud::wallRule>
+Foam::fiberCloud::wallRuleNames
+({
+    { wallRule::rebound, "rebound" },
+    { wallRule::deposit, "deposit" },
+});
+
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -61,6 +72,68 @@ word checkedScheme(const dictionary& dict)
         ) << exit(FatalIOError);
     }
     return scheme;
+}
+
+
+// All states of all processors on the master, sorted by fiber id
+List<fiberCloud::state> gatherSorted(const UList<fiberCloud::state>& local)
+{
+    // Per processor: ids and four vectors (x, p, v, omega) per fiber
+    List<labelList> ids(Pstream::nProcs());
+    List<vectorList> vals(Pstream::nProcs());
+    labelList& myIds = ids[Pstream::myProcNo()];
+    vectorList& myVals = vals[Pstream::myProcNo()];
+    myIds.setSize(local.size());
+    myVals.setSize(4*local.size());
+    forAll(local, i)
+    {
+        myIds[i] = local[i].id;
+        myVals[4*i] = local[i].x;
+        myVals[4*i + 1] = local[i].p;
+        myVals[4*i + 2] = local[i].v;
+        myVals[4*i + 3] = local[i].omega;
+    }
+
+    Pstream::gatherList(ids);
+    Pstream::gatherList(vals);
+
+    List<fiberCloud::state> result;
+    if (Pstream::master())
+    {
+        DynamicList<fiberCloud::state> all;
+        DynamicList<label> allIds;
+        forAll(ids, proci)
+        {
+            const vectorList& v = vals[proci];
+            forAll(ids[proci], k)
+            {
+                all.append
+                (
+                    fiberCloud::state
+                    {
+                        ids[proci][k], v[4*k], v[4*k+1], v[4*k+2], v[4*k+3]
+                    }
+                );
+                allIds.append(ids[proci][k]);
+            }
+        }
+        const labelList order(sortedOrder(allIds));
+        result.setSize(order.size());
+        forAll(order, k)
+        {
+            result[k] = all[order[k]];
+        }
+    }
+    return result;
+}
+
+
+fiberCloud::state stateOf(const fiber& f)
+{
+    return fiberCloud::state
+    {
+        f.id(), f.position(), f.orientation(), f.velocity(), f.omega()
+    };
 }
 
 } // End anonymous namespace
@@ -172,6 +245,7 @@ void Foam::fiberCloud::relocate()
     List<DynamicList<label>> sendFaces(nProcs);
     boolList keep(fibers_.size(), true);
     label nEscaped = 0;
+    label nDeposited = 0;
 
     forAll(fibers_, fi)
     {
@@ -197,6 +271,35 @@ void Foam::fiberCloud::relocate()
         if (found >= 0)
         {
             f.cell() = found;
+            continue;
+        }
+
+        const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+        if
+        (
+            hitFace >= 0
+         && isA<wallPolyPatch>(pbm[pbm.whichPatch(hitFace)])
+        )
+        {
+            const vector& Sf = mesh_.faceAreas()[hitFace];
+            const vector n(Sf/mag(Sf));
+            const scalar d =
+                (f.position() - mesh_.faceCentres()[hitFace]) & n;
+            if (wallRule_ == wallRule::rebound)
+            {
+                rebound(f, n, max(d, scalar(0)));
+                f.cell() = celli;
+                label hit2 = -1;
+                if (sampler_.walk(f.position(), celli, hit2))
+                {
+                    f.cell() = celli;
+                    continue;
+                }
+            }
+            // deposit rule, or a rebound that did not bring it back
+            deposit(f);
+            keep[fi] = false;
+            ++nDeposited;
         }
         else
         {
@@ -206,6 +309,7 @@ void Foam::fiberCloud::relocate()
     }
 
     nEscaped_ += returnReduce(nEscaped, sumOp<label>());
+    nDeposited_ += returnReduce(nDeposited, sumOp<label>());
 
     label nSend = 0;
     forAll(sendFibers, proci)
@@ -289,6 +393,31 @@ void Foam::fiberCloud::relocate()
 }
 
 
+void Foam::fiberCloud::rebound
+(
+    fiber& f,
+    const vector& n,
+    const scalar d
+) const
+{
+    // Back inside the wall plane, with a margin of a thousandth of the
+    // penetration and a millionth of the diameter
+    f.translate(-((1 + 1e-3)*d + 1e-6*f.minDiameter())*n);
+
+    const scalar vn = f.velocity() & n;
+    if (vn > 0)
+    {
+        f.setVelocity(f.velocity() - (1 + restitution_)*vn*n);
+    }
+}
+
+
+void Foam::fiberCloud::deposit(const fiber& f)
+{
+    deposits_.append(stateOf(f));
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fiberCloud::fiberCloud
@@ -308,17 +437,38 @@ Foam::fiberCloud::fiberCloud
         positiveOrDefault(dict, "dragCoefficient", 1)
     ),
     integrator_(fiberIntegrator::New(dict)),
+    dispersion_(fiberDispersion::New(dict)),
+    wallRule_
+    (
+        wallRuleNames.getOrDefault("wallInteraction", dict, wallRule::rebound)
+    ),
+    restitution_(dict.getOrDefault<scalar>("restitution", 1)),
     g_(g),
     shearStepFactor_(positiveOrDefault(dict, "shearStepFactor", 0.1)),
     sampler_(mesh, checkedScheme(dict)),
     nInjected_(0),
     nEscaped_(0),
+    nDeposited_(0),
+    deposits_(),
     nSubMax_(0),
     dtSubMin_(0),
     nRemote_(0),
     nTransferred_(0),
     nOutside_(0)
 {
+    if (restitution_ < 0 || restitution_ > 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'restitution' must lie in [0, 1], not " << restitution_
+            << exit(FatalIOError);
+    }
+    Info<< "    Wall interaction " << wallRuleNames[wallRule_];
+    if (wallRule_ == wallRule::rebound)
+    {
+        Info<< ", restitution " << restitution_;
+    }
+    Info<< endl;
+
     const dictionary& injectionDict = dict.subDict("injection");
 
     PtrList<fiber> all;
@@ -337,7 +487,6 @@ Foam::fiberCloud::fiberCloud
 void Foam::fiberCloud::evolve(const scalar dt)
 {
     const label nF = fibers_.size();
-    labelList nSub(nF, 1);
 
     // Flattened segment lists
     labelList offset(nF + 1, 0);
@@ -345,31 +494,40 @@ void Foam::fiberCloud::evolve(const scalar dt)
     {
         offset[fi + 1] = offset[fi] + fibers_[fi].nSegments();
     }
-
     List<point> pts(offset.last());
     labelList cells(offset.last());
     List<fluidSample> samples;
     List<point> segPts;
+    labelList start(nF, -1);
 
-    label nRounds = 1;
-    nSubMax_ = 1;
+    // Time left per fiber in this step; done below tTol
+    scalarList tLeft(nF, dt);
+    const scalar tTol = 1e-9*dt;
+    boolList gone(nF, false);
+    labelList nBounce(nF, 0);
+    const label maxBounces = 1000;
+    label nDeposited = 0;
+
     sampler_.resetCounters();
+    label nRounds = 0;
     dtSubMin_ = dt;
 
-    for (label round = 0; round < nRounds; ++round)
+    while (true)
     {
-        // Gather the segments of the fibers that step in this round
+        // The segments of the fibers that still have time to go
         label nPts = 0;
-        labelList start(nF, -1);
+        bool any = false;
         forAll(fibers_, fi)
         {
-            if (round >= nSub[fi])
+            start[fi] = -1;
+            if (gone[fi] || tLeft[fi] <= tTol)
             {
                 continue;
             }
+            any = true;
             fiber& f = fibers_[fi];
             f.segmentCentres(segPts);
-            labelList& segCells = f.segmentCells();
+            const labelList& segCells = f.segmentCells();
             start[fi] = nPts;
             forAll(segPts, i)
             {
@@ -379,50 +537,13 @@ void Foam::fiberCloud::evolve(const scalar dt)
             }
         }
 
-        sampler_.sample
-        (
-            SubList<point>(pts, nPts),
-            cells,
-            samples
-        );
-
-        if (round == 0)
+        if (!returnReduce(any, orOp<bool>()))
         {
-            // Eq. 22 sub-steps per fiber
-            label nMax = 0;
-            forAll(fibers_, fi)
-            {
-                const fiber& f = fibers_[fi];
-                scalar gammaDot = 0;
-                for (label i = 0; i < f.nSegments(); ++i)
-                {
-                    gammaDot =
-                        max(gammaDot, samples[start[fi] + i].shearRate());
-                }
-                const scalar rc = f.length()/f.minDiameter();
-                const scalar steps = dt*rc*gammaDot/shearStepFactor_;
-                if (steps > labelMax/2)
-                {
-                    FatalErrorInFunction
-                        << "Fiber " << f.id() << " needs " << steps
-                        << " sub-steps over dt = " << dt
-                        << " (shear rate " << gammaDot << ")"
-                        << exit(FatalError);
-                }
-                // Round-off tolerant: a step count that is an integer up to
-                // round-off (uniform shear) must not flip to the next one
-                nSub[fi] = max(1, label(std::ceil(steps*(1 - 1e-9))));
-                nMax = max(nMax, nSub[fi]);
-            }
-            nRounds = returnReduce(nMax, maxOp<label>());
-            nSubMax_ = max(nRounds, 1);
-            scalar dtMin = dt;
-            forAll(nSub, fi)
-            {
-                dtMin = min(dtMin, dt/nSub[fi]);
-            }
-            dtSubMin_ = returnReduce(dtMin, minOp<scalar>());
+            break;
         }
+        ++nRounds;
+
+        sampler_.sample(SubList<point>(pts, nPts), cells, samples);
 
         forAll(fibers_, fi)
         {
@@ -432,24 +553,104 @@ void Foam::fiberCloud::evolve(const scalar dt)
             }
             fiber& f = fibers_[fi];
             const label n = f.nSegments();
+            SubList<fluidSample> s(samples, n, start[fi]);
             labelList& segCells = f.segmentCells();
             for (label i = 0; i < n; ++i)
             {
                 segCells[i] = cells[start[fi] + i];
             }
-            integrator_->advance
-            (
-                f,
-                SubList<fluidSample>(samples, n, start[fi]),
-                hydro_,
-                g_,
-                dt/nSub[fi]
-            );
+
+            // Wall contact: the deepest segment beyond a wall
+            label iWall = -1;
+            forAll(s, i)
+            {
+                if
+                (
+                    s[i].beyondWall()
+                 && (iWall < 0 || s[i].dWall > s[iWall].dWall)
+                )
+                {
+                    iWall = i;
+                }
+            }
+            if (iWall >= 0)
+            {
+                if
+                (
+                    wallRule_ == wallRule::deposit
+                 || ++nBounce[fi] > maxBounces
+                )
+                {
+                    deposit(f);
+                    gone[fi] = true;
+                    ++nDeposited;
+                }
+                else
+                {
+                    rebound(f, s[iWall].nWall, s[iWall].dWall);
+                }
+                continue;
+            }
+
+            // Eq. 22: equal parts of the time left
+            scalar gammaDot = 0;
+            forAll(s, i)
+            {
+                gammaDot = max(gammaDot, s[i].shearRate());
+            }
+            const scalar rc = f.length()/f.minDiameter();
+            const scalar parts = tLeft[fi]*rc*gammaDot/shearStepFactor_;
+            if (parts > labelMax/2)
+            {
+                FatalErrorInFunction
+                    << "Fiber " << f.id() << " needs " << parts
+                    << " sub-steps over " << tLeft[fi] << " s (shear rate "
+                    << gammaDot << ")" << exit(FatalError);
+            }
+            // Round-off tolerant: a count that is an integer up to
+            // round-off (uniform shear) must not flip to the next one
+            const label nParts = max(1, label(std::ceil(parts*(1 - 1e-9))));
+            scalar dtStep = tLeft[fi]/nParts;
+
+            // Eq. 23: not beyond the end of the fiber's eddy
+            if (dispersion_->active())
+            {
+                dtStep = min(dtStep, dispersion_->correct(f, s));
+            }
+
+            integrator_->advance(f, s, hydro_, g_, dtStep);
+            dispersion_->elapse(f, dtStep);
+
+            tLeft[fi] -= dtStep;
+            if (tLeft[fi] <= tTol)
+            {
+                tLeft[fi] = 0;
+            }
+            dtSubMin_ = min(dtSubMin_, dtStep);
         }
     }
 
+    nSubMax_ = nRounds;
+    dtSubMin_ = returnReduce(dtSubMin_, minOp<scalar>());
     nRemote_ = returnReduce(sampler_.nRemote(), sumOp<label>());
     nOutside_ = returnReduce(sampler_.nOutside(), sumOp<label>());
+    nDeposited_ += returnReduce(nDeposited, sumOp<label>());
+
+    // Remove the deposited fibers
+    if (gone.found(true))
+    {
+        PtrList<fiber> kept(nF);
+        label n = 0;
+        forAll(fibers_, fi)
+        {
+            if (!gone[fi])
+            {
+                kept.set(n++, fibers_.set(fi, nullptr));
+            }
+        }
+        kept.setSize(n);
+        fibers_.transfer(kept);
+    }
 
     relocate();
 }
@@ -460,6 +661,7 @@ Foam::fiberCloud::statistics Foam::fiberCloud::stats() const
     statistics s;
     s.nInjected = nInjected_;
     s.nEscaped = nEscaped_;
+    s.nDeposited = nDeposited_;
     s.nActive = fibers_.size();
     s.absP = Zero;
     s.pp = Zero;
@@ -486,51 +688,20 @@ Foam::fiberCloud::statistics Foam::fiberCloud::stats() const
 
 Foam::List<Foam::fiberCloud::state> Foam::fiberCloud::gatherStates() const
 {
-    // Per processor: ids and four vectors (x, p, v, omega) per fiber
-    List<labelList> ids(Pstream::nProcs());
-    List<vectorList> vals(Pstream::nProcs());
-    labelList& myIds = ids[Pstream::myProcNo()];
-    vectorList& myVals = vals[Pstream::myProcNo()];
-    myIds.setSize(fibers_.size());
-    myVals.setSize(4*fibers_.size());
+    List<state> local(fibers_.size());
     forAll(fibers_, fi)
     {
-        const fiber& f = fibers_[fi];
-        myIds[fi] = f.id();
-        myVals[4*fi] = f.position();
-        myVals[4*fi + 1] = f.orientation();
-        myVals[4*fi + 2] = f.velocity();
-        myVals[4*fi + 3] = f.omega();
+        local[fi] = stateOf(fibers_[fi]);
     }
+    return gatherSorted(local);
+}
 
-    Pstream::gatherList(ids);
-    Pstream::gatherList(vals);
 
-    List<state> result;
-    if (Pstream::master())
-    {
-        DynamicList<state> all;
-        DynamicList<label> allIds;
-        forAll(ids, proci)
-        {
-            forAll(ids[proci], k)
-            {
-                const vectorList& v = vals[proci];
-                all.append
-                (
-                    state{ids[proci][k], v[4*k], v[4*k+1], v[4*k+2], v[4*k+3]}
-                );
-                allIds.append(ids[proci][k]);
-            }
-        }
-        const labelList order(sortedOrder(allIds));
-        result.setSize(order.size());
-        forAll(order, k)
-        {
-            result[k] = all[order[k]];
-        }
-    }
-    return result;
+Foam::List<Foam::fiberCloud::state> Foam::fiberCloud::gatherDeposits()
+{
+    List<state> all(gatherSorted(deposits_));
+    deposits_.clear();
+    return all;
 }
 
 

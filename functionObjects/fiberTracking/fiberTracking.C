@@ -29,6 +29,57 @@ namespace functionObjects
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+void Foam::functionObjects::fiberTracking::checkFields
+(
+    const dictionary& dict
+) const
+{
+    if (!mesh_.foundObject<volVectorField>(UName_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'U': no velocity field '" << UName_
+            << "' in the case" << exit(FatalIOError);
+    }
+
+    if (nu_ <= 0 && !mesh_.foundObject<transportModel>("transportProperties"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "No transport model 'transportProperties' in the case:"
+            << " give the kinematic viscosity as entry 'nu'"
+            << exit(FatalIOError);
+    }
+
+    if (cloud_->dispersion().active())
+    {
+        wordList missing;
+        for (const word& fld : {kName_, epsilonName_})
+        {
+            const bool onDisk =
+                IOobject
+                (
+                    fld, time_.timeName(), mesh_, IOobject::MUST_READ
+                ).typeHeaderOk<volScalarField>(true);
+            if (!mesh_.foundObject<volScalarField>(fld) && !onDisk)
+            {
+                missing.append(fld);
+            }
+        }
+        if (missing.size())
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'dispersion " << dict.get<word>("dispersion")
+                << "' needs the turbulence fields (k epsilon); missing: "
+                << missing << nl
+                << "    No turbulence model provides them and they are not"
+                << " in " << time_.timePath() << "." << nl
+                << "    Use 'dispersion none' for a laminar case, or name"
+                << " the fields with entries 'k' and 'epsilon'"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
 Foam::tmp<Foam::scalarField>
 Foam::functionObjects::fiberTracking::muCells() const
 {
@@ -44,6 +95,87 @@ Foam::functionObjects::fiberTracking::muCells() const
 }
 
 
+const Foam::volScalarField&
+Foam::functionObjects::fiberTracking::turbulenceField
+(
+    const word& name,
+    autoPtr<volScalarField>& disk
+)
+{
+    if (mesh_.foundObject<volScalarField>(name))
+    {
+        return mesh_.lookupObject<volScalarField>(name);
+    }
+    if (!disk.valid() || disk->instance() != time_.timeName())
+    {
+        disk.reset
+        (
+            new volScalarField
+            (
+                IOobject
+                (
+                    name,
+                    time_.timeName(),
+                    mesh_,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE,
+                    false
+                ),
+                mesh_
+            )
+        );
+    }
+    return disk();
+}
+
+
+void Foam::functionObjects::fiberTracking::updateFields()
+{
+    const volVectorField& U = lookupObject<volVectorField>(UName_);
+    gradU_ = fvc::grad(U);
+
+    if (cloud_->dispersion().active())
+    {
+        cloud_->sampler().update
+        (
+            U,
+            gradU_(),
+            muCells(),
+            &turbulenceField(kName_, kDisk_),
+            &turbulenceField(epsilonName_, epsilonDisk_)
+        );
+    }
+    else
+    {
+        cloud_->sampler().update(U, gradU_(), muCells());
+    }
+}
+
+
+void Foam::functionObjects::fiberTracking::advance(const scalar dt)
+{
+    cloud_->evolve(dt);
+    fiberTime_ += dt;
+
+    writeStatistics();
+
+    Log << type() << " " << name() << " execute: fiber time " << fiberTime_
+        << ", sub-steps " << cloud_->nSubMax()
+        << " (smallest " << cloud_->dtSubMin() << " s)";
+    if (Pstream::parRun())
+    {
+        Log << ", remote segment samples " << cloud_->nRemote()
+            << ", fibers transferred " << cloud_->nTransferred();
+    }
+    if (cloud_->nOutside())
+    {
+        Log << ", segment samples outside the mesh " << cloud_->nOutside()
+            << " (fluid data of the last cell reached)";
+    }
+    Log << endl;
+}
+
+
 void Foam::functionObjects::fiberTracking::writeStatistics()
 {
     const fiberCloud::statistics s(cloud_->stats());
@@ -51,8 +183,8 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
     if (Pstream::master() && writeToFile())
     {
         OFstream& os = file();
-        os  << fiberTime_ << tab
-            << s.nInjected << tab << s.nActive << tab << s.nEscaped;
+        os  << fiberTime_ << tab << s.nInjected << tab << s.nActive
+            << tab << s.nEscaped << tab << s.nDeposited;
         for (direction k = 0; k < 3; ++k)
         {
             os << tab << s.absP[k];
@@ -64,13 +196,45 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
         os << endl;
     }
 
-    if (s.nInjected != s.nActive + s.nEscaped)
+    if (s.nInjected != s.nActive + s.nEscaped + s.nDeposited)
     {
         FatalErrorInFunction
             << "Fiber count broken: injected " << s.nInjected
             << " != active " << s.nActive << " + escaped " << s.nEscaped
-            << exit(FatalError);
+            << " + deposited " << s.nDeposited << exit(FatalError);
     }
+
+    // Deposits since the last call
+    if (cloud_->wallInteraction() == fiberCloud::wallRule::deposit)
+    {
+        const List<fiberCloud::state> dep(cloud_->gatherDeposits());
+        if (Pstream::master() && depositFilePtr_.valid())
+        {
+            writeStates(dep, depositFilePtr_());
+        }
+    }
+}
+
+
+void Foam::functionObjects::fiberTracking::writeStates
+(
+    const UList<fiberCloud::state>& states,
+    OFstream& os
+) const
+{
+    for (const fiberCloud::state& s : states)
+    {
+        os  << fiberTime_ << tab << s.id;
+        for (const vector& v : {s.x, s.p, s.v, s.omega})
+        {
+            for (direction k = 0; k < 3; ++k)
+            {
+                os << tab << v[k];
+            }
+        }
+        os << nl;
+    }
+    os.flush();
 }
 
 
@@ -91,8 +255,18 @@ Foam::functionObjects::fiberTracking::fiberTracking
     steady_(false),
     timePerIteration_(0),
     fiberTime_(runTime.value()),
+    kName_("k"),
+    epsilonName_("epsilon"),
+    duration_(0),
+    outputInterval_(0),
+    started_(false),
+    dict_(dict),
     cloud_(),
-    stateFilePtr_()
+    gradU_(),
+    kDisk_(),
+    epsilonDisk_(),
+    stateFilePtr_(),
+    depositFilePtr_()
 {
     read(dict);
 }
@@ -117,12 +291,8 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
     Info<< type() << " " << name() << ":" << nl;
 
     UName_ = dict.getOrDefault<word>("U", "U");
-    if (!mesh_.foundObject<volVectorField>(UName_))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'U': no velocity field '" << UName_
-            << "' in the case" << exit(FatalIOError);
-    }
+    kName_ = dict.getOrDefault<word>("k", "k");
+    epsilonName_ = dict.getOrDefault<word>("epsilon", "epsilon");
 
     rhoInf_ = dict.get<scalar>("rhoInf");
     if (!(rhoInf_ > 0))
@@ -144,33 +314,74 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
         }
         Info<< "    Kinematic viscosity from entry 'nu': " << nu_ << nl;
     }
-    else if (!mesh_.foundObject<transportModel>("transportProperties"))
-    {
-        FatalIOErrorInFunction(dict)
-            << "No transport model 'transportProperties' in the case:"
-            << " give the kinematic viscosity as entry 'nu'"
-            << exit(FatalIOError);
-    }
 
-    steady_ = mesh_.steady();
-    if (steady_)
+    if (functionObject::postProcess)
     {
-        timePerIteration_ = dict.get<scalar>("timePerIteration");
-        if (!(timePerIteration_ > 0))
+        duration_ = dict.getOrDefault<scalar>("duration", 0);
+        if (duration_ < 0)
         {
             FatalIOErrorInFunction(dict)
-                << "Entry 'timePerIteration' must be positive, not "
-                << timePerIteration_ << exit(FatalIOError);
+                << "Entry 'duration' must be positive, not " << duration_
+                << exit(FatalIOError);
         }
-        Info<< "    Steady solver: fibers advance " << timePerIteration_
-            << " s per iteration" << nl;
+        outputInterval_ =
+            dict.getOrDefault<scalar>("outputInterval", duration_/100);
+        if (duration_ > 0 && !(outputInterval_ > 0))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'outputInterval' must be positive, not "
+                << outputInterval_ << exit(FatalIOError);
+        }
+        if (duration_ > 0)
+        {
+            Info<< "    Post-processing: " << duration_ << " s of fiber time"
+                << " on each selected time, output every "
+                << outputInterval_ << " s" << nl;
+        }
+        else
+        {
+            Info<< "    Post-processing: fibers advance from one selected"
+                << " time to the next" << nl;
+        }
+        if (dict.found("timePerIteration"))
+        {
+            Info<< "    Entry 'timePerIteration' is not used in"
+                << " post-processing" << nl;
+        }
     }
-    else if (dict.found("timePerIteration"))
+    else
     {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'timePerIteration' is for steady solvers only; this"
-            << " solver is transient and the fibers advance by its time"
-            << " step. Remove the entry." << exit(FatalIOError);
+        for (const word key : {"duration", "outputInterval"})
+        {
+            if (dict.found(key))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry '" << key << "' is for post-processing"
+                    << " (-postProcess) only; remove it"
+                    << exit(FatalIOError);
+            }
+        }
+
+        steady_ = mesh_.steady();
+        if (steady_)
+        {
+            timePerIteration_ = dict.get<scalar>("timePerIteration");
+            if (!(timePerIteration_ > 0))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry 'timePerIteration' must be positive, not "
+                    << timePerIteration_ << exit(FatalIOError);
+            }
+            Info<< "    Steady solver: fibers advance " << timePerIteration_
+                << " s per iteration" << nl;
+        }
+        else if (dict.found("timePerIteration"))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'timePerIteration' is for steady solvers only;"
+                << " this solver is transient and the fibers advance by its"
+                << " time step. Remove the entry." << exit(FatalIOError);
+        }
     }
 
     vector g(Zero);
@@ -191,6 +402,13 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
         << (cloud_->hydrodynamics().inertial() ? "on" : "off")
         << " (C_D " << cloud_->hydrodynamics().CD() << ")" << nl << endl;
 
+    // The fields exist now, except in post-processing, where the solver
+    // builds them for each selected time (checked at the first execute)
+    if (!functionObject::postProcess)
+    {
+        checkFields(dict);
+    }
+
     if (Pstream::master() && writeToFile())
     {
         OFstream& os = file();
@@ -198,22 +416,33 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
         writeCommented
         (
             os,
-            "Time nInjected nActive nEscaped absP1 absP2 absP3"
+            "Time nInjected nActive nEscaped nDeposited absP1 absP2 absP3"
             " pp_xx pp_xy pp_xz pp_yy pp_yz pp_zz"
         );
         os << endl;
 
-        stateFilePtr_ = createFile("fiberState");
-        writeHeader(stateFilePtr_(), "Rigid fiber state (fiberTracking)");
-        writeCommented
+        const string stateColumns
         (
-            stateFilePtr_(),
             "Time id cx cy cz px py pz vx vy vz wx wy wz"
         );
+        stateFilePtr_ = createFile("fiberState");
+        writeHeader(stateFilePtr_(), "Rigid fiber state (fiberTracking)");
+        writeCommented(stateFilePtr_(), stateColumns);
         stateFilePtr_() << endl;
+
+        if (cloud_->wallInteraction() == fiberCloud::wallRule::deposit)
+        {
+            depositFilePtr_ = createFile("fiberDeposits");
+            writeHeader(depositFilePtr_(), "Deposited fibers (fiberTracking)");
+            writeCommented(depositFilePtr_(), stateColumns);
+            depositFilePtr_() << endl;
+        }
     }
 
-    writeStatistics();
+    if (!functionObject::postProcess)
+    {
+        writeStatistics();
+    }
 
     return true;
 }
@@ -221,39 +450,76 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
 
 bool Foam::functionObjects::fiberTracking::execute()
 {
-    const scalar dt =
-        steady_
-      ? timePerIteration_
-      : time_.value() - fiberTime_;
-
-    if (dt <= 0)
+    if (!functionObject::postProcess)
     {
+        const scalar dt =
+            steady_
+          ? timePerIteration_
+          : time_.value() - fiberTime_;
+
+        if (dt > 0)
+        {
+            updateFields();
+            advance(dt);
+        }
         return true;
     }
 
-    const volVectorField& U = lookupObject<volVectorField>(UName_);
-    const volTensorField gradU(fvc::grad(U));
-
-    cloud_->sampler().update(U, gradU, muCells());
-    cloud_->evolve(dt);
-    fiberTime_ += dt;
-
-    writeStatistics();
-
-    Log << type() << " " << name() << " execute: fiber time " << fiberTime_
-        << ", sub-steps " << cloud_->nSubMax()
-        << " (smallest " << cloud_->dtSubMin() << " s)";
-    if (Pstream::parRun())
+    // Post-processing: the solver has built the fields of this time
+    if (!started_)
     {
-        Log << ", remote segment samples " << cloud_->nRemote()
-            << ", fibers transferred " << cloud_->nTransferred();
+        // Errors here must stop the run: the post-processing loop would
+        // only print a caught FatalIOError as a warning
+        const bool throwing = FatalIOError.throwExceptions(false);
+        checkFields(dict_);
+        FatalIOError.throwExceptions(throwing);
+
+        started_ = true;
+        fiberTime_ = time_.value();
+        writeStatistics();
+        if (Pstream::master() && stateFilePtr_.valid())
+        {
+            writeStates(cloud_->gatherStates(), stateFilePtr_());
+        }
+        else
+        {
+            cloud_->gatherStates();
+        }
+        if (duration_ <= 0)
+        {
+            return true;
+        }
     }
-    if (cloud_->nOutside())
+
+    updateFields();
+
+    if (duration_ > 0)
     {
-        Log << ", segment samples outside the mesh " << cloud_->nOutside()
-            << " (fluid data of the last cell reached)";
+        const label nOut =
+            max(1, label(std::ceil(duration_/outputInterval_*(1 - 1e-9))));
+        for (label k = 0; k < nOut; ++k)
+        {
+            advance(duration_/nOut);
+            const List<fiberCloud::state> st(cloud_->gatherStates());
+            if (Pstream::master() && stateFilePtr_.valid())
+            {
+                writeStates(st, stateFilePtr_());
+            }
+        }
     }
-    Log << endl;
+    else
+    {
+        const scalar dt = time_.value() - fiberTime_;
+        if (dt > 0)
+        {
+            advance(dt);
+            const List<fiberCloud::state> st(cloud_->gatherStates());
+            if (Pstream::master() && stateFilePtr_.valid())
+            {
+                writeStates(st, stateFilePtr_());
+            }
+        }
+    }
 
     return true;
 }
@@ -261,24 +527,17 @@ bool Foam::functionObjects::fiberTracking::execute()
 
 bool Foam::functionObjects::fiberTracking::write()
 {
+    // Post-processing writes its states in execute()
+    if (functionObject::postProcess)
+    {
+        return true;
+    }
+
     const List<fiberCloud::state> states(cloud_->gatherStates());
 
     if (Pstream::master() && stateFilePtr_.valid())
     {
-        OFstream& os = stateFilePtr_();
-        for (const fiberCloud::state& s : states)
-        {
-            os  << fiberTime_ << tab << s.id;
-            for (const vector& v : {s.x, s.p, s.v, s.omega})
-            {
-                for (direction k = 0; k < 3; ++k)
-                {
-                    os << tab << v[k];
-                }
-            }
-            os << nl;
-        }
-        os.flush();
+        writeStates(states, stateFilePtr_());
     }
 
     return true;

@@ -14,6 +14,7 @@ License
 #include "processorPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
 #include "PstreamBuffers.H"
+#include "wallPolyPatch.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -24,6 +25,8 @@ Foam::fluidSampler::fluidSampler(const fvMesh& mesh, const word& scheme)
     procPatch_(),
     UInterp_(),
     gradUInterp_(),
+    kInterp_(),
+    epsilonInterp_(),
     mu_(),
     nRemote_(0),
     nOutside_(0)
@@ -54,7 +57,8 @@ Foam::fluidSample Foam::fluidSampler::sampleLocal
 (
     const point& p,
     const label celli,
-    const bool inside
+    const bool inside,
+    const label hitFace
 ) const
 {
     fluidSample s
@@ -64,10 +68,29 @@ Foam::fluidSample Foam::fluidSampler::sampleLocal
         gradUInterp_->interpolate(p, celli).T(),
         mu_[celli]
     );
+    if (kInterp_.valid())
+    {
+        s.k = max(kInterp_->interpolate(p, celli), scalar(0));
+        s.epsilon = max(epsilonInterp_->interpolate(p, celli), scalar(0));
+    }
     s.inside = inside;
     if (!inside)
     {
         ++nOutside_;
+        if
+        (
+            hitFace >= 0
+         && isA<wallPolyPatch>
+            (
+                mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(hitFace)]
+            )
+        )
+        {
+            const vector& Sf = mesh_.faceAreas()[hitFace];
+            s.nWall = Sf/mag(Sf);
+            s.dWall =
+                max((p - mesh_.faceCentres()[hitFace]) & s.nWall, scalar(0));
+        }
     }
     return s;
 }
@@ -139,7 +162,7 @@ void Foam::fluidSampler::exchange
             }
             else
             {
-                result[k] = sampleLocal(rp[k], celli, false);
+                result[k] = sampleLocal(rp[k], celli, false, hit);
             }
         }
 
@@ -170,12 +193,24 @@ void Foam::fluidSampler::update
 (
     const volVectorField& U,
     const volTensorField& gradU,
-    const scalarField& muCells
+    const scalarField& muCells,
+    const volScalarField* kPtr,
+    const volScalarField* epsilonPtr
 )
 {
     UInterp_ = interpolation<vector>::New(scheme_, U);
     gradUInterp_ = interpolation<tensor>::New(scheme_, gradU);
     mu_ = muCells;
+    if (kPtr && epsilonPtr)
+    {
+        kInterp_ = interpolation<scalar>::New(scheme_, *kPtr);
+        epsilonInterp_ = interpolation<scalar>::New(scheme_, *epsilonPtr);
+    }
+    else
+    {
+        kInterp_.clear();
+        epsilonInterp_.clear();
+    }
 }
 
 
@@ -326,7 +361,7 @@ void Foam::fluidSampler::sample
         else if (celli >= 0)
         {
             cells[i] = celli;
-            out[i] = sampleLocal(p, celli, false);
+            out[i] = sampleLocal(p, celli, false, hitFace);
         }
         else
         {

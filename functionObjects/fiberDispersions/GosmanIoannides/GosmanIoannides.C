@@ -1,0 +1,212 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "GosmanIoannides.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+#include <cmath>
+#include <cstdint>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace fiberDispersions
+{
+    defineTypeNameAndDebug(GosmanIoannides, 0);
+    addToRunTimeSelectionTable(fiberDispersion, GosmanIoannides, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// SplitMix64 finaliser (a bijective 64-bit mixing function)
+inline std::uint64_t mix64(std::uint64_t z)
+{
+    z = (z ^ (z >> 30))*UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27))*UINT64_C(0x94D049BB133111EB);
+    return z ^ (z >> 31);
+}
+
+const std::uint64_t golden = UINT64_C(0x9E3779B97F4A7C15);
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fiberDispersions::GosmanIoannides::GosmanIoannides
+(
+    const dictionary& coeffs
+)
+:
+    Cmu_(coeffs.getOrDefault<scalar>("Cmu", 0.09)),
+    CmuExponent_(coeffs.getOrDefault<scalar>("CmuExponent", 0.63)),
+    seed_(coeffs.getOrDefault<label>("seed", 1)),
+    CmuN_(0)
+{
+    if (!(Cmu_ > 0))
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry 'Cmu' must be positive, not " << Cmu_
+            << exit(FatalIOError);
+    }
+    if (seed_ < 0)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Entry 'seed' must be >= 0, not " << seed_
+            << exit(FatalIOError);
+    }
+    CmuN_ = std::pow(Cmu_, CmuExponent_);
+
+    Info<< "    Gosman-Ioannides: l_e = " << CmuN_ << " k^1.5/epsilon"
+        << " (Cmu " << Cmu_ << "^" << CmuExponent_ << "), seed " << seed_
+        << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fiberDispersions::GosmanIoannides::uniform
+(
+    const label seed,
+    const label id,
+    const label j
+)
+{
+    const std::uint64_t stream =
+        mix64(std::uint64_t(seed)*golden ^ mix64(std::uint64_t(id) + 1));
+    const std::uint64_t z = mix64(stream + (std::uint64_t(j) + 1)*golden);
+
+    // 53 random bits, shifted off 0 and 1
+    return (double(z >> 11) + 0.5)*(1.0/9007199254740992.0);
+}
+
+
+Foam::vector Foam::fiberDispersions::GosmanIoannides::gaussian
+(
+    const label seed,
+    const label id,
+    const label draw
+)
+{
+    const label j = 4*draw;
+    const scalar r1 = std::sqrt(-2*std::log(uniform(seed, id, j)));
+    const scalar a1 = constant::mathematical::twoPi*uniform(seed, id, j + 1);
+    const scalar r2 = std::sqrt(-2*std::log(uniform(seed, id, j + 2)));
+    const scalar a2 = constant::mathematical::twoPi*uniform(seed, id, j + 3);
+
+    return vector(r1*std::cos(a1), r1*std::sin(a1), r2*std::cos(a2));
+}
+
+
+Foam::scalar Foam::fiberDispersions::GosmanIoannides::eddyLifetime
+(
+    const scalar le,
+    const scalar magUprime
+)
+{
+    return magUprime > 0 ? le/magUprime : GREAT;
+}
+
+
+Foam::scalar Foam::fiberDispersions::GosmanIoannides::transitTime
+(
+    const scalar le,
+    const scalar tau,
+    const scalar magSlip
+)
+{
+    if (le < tau*magSlip)
+    {
+        return -tau*std::log1p(-le/(tau*magSlip));
+    }
+    return GREAT;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fiberDispersions::GosmanIoannides::eddyLength
+(
+    const scalar k,
+    const scalar epsilon
+) const
+{
+    if (k > 0 && epsilon > 0)
+    {
+        return CmuN_*std::pow(k, 1.5)/epsilon;
+    }
+    return 0;
+}
+
+
+Foam::scalar Foam::fiberDispersions::GosmanIoannides::correct
+(
+    fiber& f,
+    UList<fluidSample>& s
+) const
+{
+    const tensor R(f.R());
+    const bool newEddy = (f.eddyTime() <= 0);
+
+    if (newEddy)
+    {
+        f.psi() = gaussian(seed_, f.id(), f.nDraws());
+        ++f.nDraws();
+    }
+
+    scalar tInteraction = GREAT;
+    forAll(s, i)
+    {
+        const vector uPrime(f.psi()*std::sqrt(2*s[i].k/3));
+        s[i].U += uPrime;
+
+        if (newEddy)
+        {
+            const scalar le = eddyLength(s[i].k, s[i].epsilon);
+            if (le <= 0)
+            {
+                continue;
+            }
+            // tau_i = m_i/(3 pi eta l Y^A) = m_i/(eta 6 pi a Y^A)
+            const scalar tau = f.segmentMass(i)/(s[i].mu*f.kAp(i));
+            const vector r(f.segmentOffset(R, i));
+            const vector vSeg(f.velocity() + (f.omega() ^ r));
+            tInteraction = min
+            (
+                tInteraction,
+                min
+                (
+                    eddyLifetime(le, mag(uPrime)),
+                    transitTime(le, tau, mag(s[i].U - vSeg))
+                )
+            );
+        }
+    }
+
+    if (newEddy)
+    {
+        // No turbulence at any segment: draw again at the next sub-step
+        f.eddyTime() = (tInteraction < GREAT ? tInteraction : 0);
+    }
+
+    return f.eddyTime() > 0 ? f.eddyTime() : GREAT;
+}
+
+
+// ************************************************************************* //
