@@ -438,10 +438,7 @@ Foam::fiberCloud::fiberCloud
     ),
     integrator_(fiberIntegrator::New(dict)),
     dispersion_(fiberDispersion::New(dict)),
-    wallRule_
-    (
-        wallRuleNames.getOrDefault("wallInteraction", dict, wallRule::rebound)
-    ),
+    wallRule_(wallRule::rebound),
     restitution_(dict.getOrDefault<scalar>("restitution", 1)),
     g_(g),
     shearStepFactor_(positiveOrDefault(dict, "shearStepFactor", 0.1)),
@@ -456,6 +453,16 @@ Foam::fiberCloud::fiberCloud
     nTransferred_(0),
     nOutside_(0)
 {
+    const word rule(dict.getOrDefault<word>("wallInteraction", "rebound"));
+    if (!wallRuleNames.found(rule))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'wallInteraction': unknown rule '" << rule
+            << "'; valid rules: " << wallRuleNames.sortedToc()
+            << exit(FatalIOError);
+    }
+    wallRule_ = wallRuleNames[rule];
+
     if (restitution_ < 0 || restitution_ > 1)
     {
         FatalIOErrorInFunction(dict)

@@ -25,6 +25,8 @@ Description
 #include "fiber.H"
 #include "fiberHydrodynamics.H"
 #include "fiberIntegrator.H"
+#include "fiberDispersion.H"
+#include "GosmanIoannides.H"
 #include "mathematicalConstants.H"
 #include "IOstreams.H"
 
@@ -668,6 +670,178 @@ void testJefferyAndRigidity()
 }
 
 
+void testGosmanIoannides()
+{
+    typedef fiberDispersions::GosmanIoannides GI;
+
+    // Hand-computed values (calculator):
+    //   0.09^0.63 = exp(0.63 ln 0.09) = exp(-1.517005728) = 0.2193677501
+    //   l_e(k = 1, eps = 10) = 0.2193677501/10 = 0.02193677501 m
+    //   t_e(l_e = 0.02, |u'| = 0.5) = 0.04 s
+    //   t_tr(l_e = 0.02, tau = 0.01, |slip| = 4) = -0.01 ln(0.5)
+    //                                             = 0.006931471806 s
+    //   t_tr(l_e = 0.02, tau = 0.01, |slip| = 1): captured (l_e >= 0.01)
+    {
+        dictionary coeffs;
+        const GI gi(coeffs);
+        const scalar le = gi.eddyLength(1, 10);
+        check
+        (
+            "dispersion.eddyLengthHand",
+            relErr(le, 0.02193677501) < 1e-9,
+            fmt(le, 0.02193677501, relErr(le, 0.02193677501))
+        );
+        const scalar te = GI::eddyLifetime(0.02, 0.5);
+        check
+        (
+            "dispersion.eddyLifetimeHand",
+            relErr(te, 0.04) < 1e-14,
+            fmt(te, 0.04, relErr(te, 0.04))
+        );
+        const scalar ttr = GI::transitTime(0.02, 0.01, 4);
+        check
+        (
+            "dispersion.transitTimeHand",
+            relErr(ttr, 0.006931471806) < 1e-9,
+            fmt(ttr, 0.006931471806, relErr(ttr, 0.006931471806))
+        );
+        const scalar tc = GI::transitTime(0.02, 0.01, 1);
+        check
+        (
+            "dispersion.transitTimeCaptured",
+            tc >= GREAT,
+            fmt(tc, GREAT, 0)
+        );
+    }
+
+    // Fluctuation statistics through the model: k = 1.5 gives
+    // u' = psi, zero mean and unit variance per component
+    {
+        dictionary dict;
+        dict.add("dispersion", "GosmanIoannides");
+        autoPtr<fiberDispersion> disp(fiberDispersion::New(dict));
+        const label nDraw = 200000;
+        vector sum(Zero), sumSq(Zero);
+        scalar sumXY = 0;
+        for (label n = 0; n < nDraw; ++n)
+        {
+            fiber f
+            (
+                fiber::straight
+                (
+                    n % 1000, Zero, vector(0, 0, 1), 1, 2e-4, 2e-5, 1380
+                )
+            );
+            f.nDraws() = n/1000;
+            List<fluidSample> s(1, fluidSample(Zero, Zero, 1.8e-5));
+            s[0].k = 1.5;
+            s[0].epsilon = 10;
+            disp->correct(f, s);
+            sum += s[0].U;
+            sumSq += cmptMultiply(s[0].U, s[0].U);
+            sumXY += s[0].U.x()*s[0].U.y();
+        }
+        const vector mean(sum/nDraw);
+        const vector var(sumSq/nDraw - cmptMultiply(mean, mean));
+        // 4 standard errors: mean 4/sqrt(N), variance 4 sqrt(2/N)
+        const scalar tolMean = 4/std::sqrt(scalar(nDraw));
+        const scalar tolVar = 4*std::sqrt(2.0/nDraw);
+        std::ostringstream det;
+        det << "mean " << mean.x() << " " << mean.y() << " " << mean.z()
+            << ", variance " << var.x() << " " << var.y() << " " << var.z()
+            << ", <u'v'> " << sumXY/nDraw << "; reference 0 and 2k/3 = 1"
+            << " within " << tolMean << " and " << tolVar;
+        check
+        (
+            "dispersion.fluctuationZeroMean",
+            cmptMax(cmptMag(mean)) < tolMean,
+            det.str()
+        );
+        check
+        (
+            "dispersion.fluctuationVariance2kOver3",
+            cmptMax(cmptMag(var - vector::one)) < tolVar
+         && mag(sumXY/nDraw) < tolMean,
+            det.str()
+        );
+    }
+
+    // Same seed, same eddies; another seed, other eddies
+    {
+        const vector a(GI::gaussian(3, 17, 5)), b(GI::gaussian(3, 17, 5));
+        const vector c(GI::gaussian(4, 17, 5));
+        check
+        (
+            "dispersion.reproducibleSeed",
+            a == b && mag(a - c) > 1e-6,
+            "seed 3 twice equal, seed 4 differs"
+        );
+    }
+
+    // Dispersion in uniform k, epsilon, no mean flow: a fiber with
+    // tau << t_e follows the eddies (captured: t_tr infinite), so its
+    // velocity is psi sigma held for T = l_e/(|psi| sigma).  Renewal
+    // theory gives <x^2>/t -> E[(u_x T)^2]/E[T] per component, with
+    // E[(u_x T)^2] = l_e^2/3 and E[T] = l_e sqrt(2/pi)/sigma (chi law of
+    // |psi|): D = <x^2>/(2t) = l_e sigma sqrt(pi/2)/6.  Inertia changes
+    // the displacement by at most tau |v|, bounded in time.
+    {
+        dictionary dict;
+        dict.add("dispersion", "GosmanIoannides");
+        autoPtr<fiberDispersion> disp(fiberDispersion::New(dict));
+        dictionary idict;
+        idict.add("integrator", "implicitEuler");
+        autoPtr<fiberIntegrator> integ(fiberIntegrator::New(idict));
+        const fiberHydrodynamics hydro(1.2, false, 1);
+
+        const scalar k = 1, epsilon = 1, mu = 1.8e-5;
+        const scalar sigma = std::sqrt(2*k/3);
+        dictionary coeffs;
+        const scalar le = GI(coeffs).eddyLength(k, epsilon);
+        const scalar D = le*sigma*std::sqrt(pi/2)/6;
+        const scalar ET = le*std::sqrt(2/pi)/sigma;
+        const scalar tEnd = 300*ET;
+
+        const label nFib = 2000;
+        scalar sumR2 = 0;
+        for (label id = 0; id < nFib; ++id)
+        {
+            fiber f
+            (
+                fiber::straight
+                (
+                    id, Zero, vector(0, 0, 1), 1, 2e-4, 2e-5, 1380
+                )
+            );
+            scalar t = 0;
+            List<fluidSample> s(1);
+            while (t < tEnd)
+            {
+                s[0] = fluidSample(Zero, Zero, mu);
+                s[0].k = k;
+                s[0].epsilon = epsilon;
+                const scalar dt = min(disp->correct(f, s), tEnd - t);
+                integ->advance(f, s, hydro, Zero, dt);
+                disp->elapse(f, dt);
+                t += dt;
+            }
+            sumR2 += magSqr(f.position());
+        }
+        const scalar Dsim = sumR2/nFib/(6*tEnd);
+        // statistical error of a mean of nFib squared displacements in
+        // 3 components: relative sqrt(2/(3 nFib)) = 1.8 %; 4 of them
+        const scalar tol = 4*std::sqrt(2.0/(3*nFib));
+        check
+        (
+            "dispersion.meanSquareDisplacement",
+            relErr(Dsim, D) < tol,
+            fmt(Dsim, D, relErr(Dsim, D)) + ", tolerance "
+          + std::to_string(tol)
+        );
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
 
 int main()
@@ -683,6 +857,7 @@ int main()
         testInertia();
         testRelaxation();
         testGravity();
+        testGosmanIoannides();
         testJefferyAndRigidity();
     }
     catch (const Foam::error& err)
