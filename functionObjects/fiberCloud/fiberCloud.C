@@ -511,8 +511,6 @@ void Foam::fiberCloud::evolve(const scalar dt)
     scalarList tLeft(nF, dt);
     const scalar tTol = 1e-9*dt;
     boolList gone(nF, false);
-    labelList nBounce(nF, 0);
-    const label maxBounces = 1000;
     label nDeposited = 0;
 
     sampler_.resetCounters();
@@ -582,21 +580,16 @@ void Foam::fiberCloud::evolve(const scalar dt)
             }
             if (iWall >= 0)
             {
-                if
-                (
-                    wallRule_ == wallRule::deposit
-                 || ++nBounce[fi] > maxBounces
-                )
+                if (wallRule_ == wallRule::deposit)
                 {
                     deposit(f);
                     gone[fi] = true;
                     ++nDeposited;
+                    continue;
                 }
-                else
-                {
-                    rebound(f, s[iWall].nWall, s[iWall].dWall);
-                }
-                continue;
+                // Back inside, then the step goes on with these samples
+                // (a fiber pressed onto a wall slides along it)
+                rebound(f, s[iWall].nWall, s[iWall].dWall);
             }
 
             // Eq. 22: equal parts of the time left

@@ -249,11 +249,40 @@ void Foam::fiberInjection::read
                 orig.append(origin{setName, k});
             }
         }
+        else if (setType == "line")
+        {
+            const label nFibers = setDict.get<label>("nFibers");
+            if (nFibers < 1)
+            {
+                FatalIOErrorInFunction(setDict)
+                    << "Entry 'nFibers' must be at least 1, not " << nFibers
+                    << exit(FatalIOError);
+            }
+            const point a(setDict.get<point>("start"));
+            const point b(setDict.get<point>("end"));
+            const vector dir(unitVector(setDict, "direction"));
+            for (label k = 0; k < nFibers; ++k)
+            {
+                const scalar w = nFibers > 1 ? scalar(k)/(nFibers - 1) : 0.5;
+                made.append
+                (
+                    new fiber
+                    (
+                        fiber::straight
+                        (
+                            made.size(), a + w*(b - a), dir,
+                            def.n, def.l, def.d, def.rho
+                        )
+                    )
+                );
+                orig.append(origin{setName, k});
+            }
+        }
         else
         {
             FatalIOErrorInFunction(setDict)
                 << "Unknown fiber set type '" << setType
-                << "' in entry 'type'; valid types: (list randomBox)"
+                << "' in entry 'type'; valid types: (list line randomBox)"
                 << exit(FatalIOError);
         }
     }

@@ -474,8 +474,11 @@ bool Foam::functionObjects::fiberTracking::execute()
         checkFields(dict_);
         FatalIOError.throwExceptions(throwing);
 
+        // With a duration the fiber time starts at zero on the frozen
+        // field (the time of a steady run counts iterations); without,
+        // it follows the selected times
         started_ = true;
-        fiberTime_ = time_.value();
+        fiberTime_ = duration_ > 0 ? 0 : time_.value();
         writeStatistics();
         if (Pstream::master() && stateFilePtr_.valid())
         {

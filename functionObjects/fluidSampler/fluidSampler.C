@@ -15,6 +15,7 @@ License
 #include "processorCyclicPolyPatch.H"
 #include "PstreamBuffers.H"
 #include "wallPolyPatch.H"
+#include "interpolationCellPoint.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -28,6 +29,7 @@ Foam::fluidSampler::fluidSampler(const fvMesh& mesh, const word& scheme)
     kInterp_(),
     epsilonInterp_(),
     mu_(),
+    cellPoint_(false),
     nRemote_(0),
     nOutside_(0)
 {
@@ -61,18 +63,37 @@ Foam::fluidSample Foam::fluidSampler::sampleLocal
     const label hitFace
 ) const
 {
-    fluidSample s
-    (
-        UInterp_->interpolate(p, celli),
-        // fvc::grad(U) holds du_j/dx_i; G_ij = du_i/dx_j
-        gradUInterp_->interpolate(p, celli).T(),
-        mu_[celli]
-    );
-    if (kInterp_.valid())
+    fluidSample s;
+    s.mu = mu_[celli];
+
+    if (cellPoint_)
     {
-        s.k = max(kInterp_->interpolate(p, celli), scalar(0));
-        s.epsilon = max(epsilonInterp_->interpolate(p, celli), scalar(0));
+        const cellPointWeight cpw(mesh_, p, celli);
+        s.U = static_cast<const interpolationCellPoint<vector>&>
+            (UInterp_()).interpolate(cpw);
+        s.G = static_cast<const interpolationCellPoint<tensor>&>
+            (gradUInterp_()).interpolate(cpw).T();
+        if (kInterp_.valid())
+        {
+            s.k = static_cast<const interpolationCellPoint<scalar>&>
+                (kInterp_()).interpolate(cpw);
+            s.epsilon = static_cast<const interpolationCellPoint<scalar>&>
+                (epsilonInterp_()).interpolate(cpw);
+        }
     }
+    else
+    {
+        s.U = UInterp_->interpolate(p, celli);
+        // fvc::grad(U) holds du_j/dx_i; G_ij = du_i/dx_j
+        s.G = gradUInterp_->interpolate(p, celli).T();
+        if (kInterp_.valid())
+        {
+            s.k = kInterp_->interpolate(p, celli);
+            s.epsilon = epsilonInterp_->interpolate(p, celli);
+        }
+    }
+    s.k = max(s.k, scalar(0));
+    s.epsilon = max(s.epsilon, scalar(0));
     s.inside = inside;
     if (!inside)
     {
@@ -211,6 +232,15 @@ void Foam::fluidSampler::update
         kInterp_.clear();
         epsilonInterp_.clear();
     }
+
+    cellPoint_ =
+        isA<interpolationCellPoint<vector>>(UInterp_())
+     && isA<interpolationCellPoint<tensor>>(gradUInterp_())
+     && (!kInterp_.valid() || isA<interpolationCellPoint<scalar>>(kInterp_()))
+     && (
+            !epsilonInterp_.valid()
+         || isA<interpolationCellPoint<scalar>>(epsilonInterp_())
+        );
 }
 
 
