@@ -57,8 +57,8 @@ void Foam::fiber::calcProperties()
         kAx_[i] = 6*pi*a*res.XA;
         kAp_[i] = 6*pi*a*res.YA;
         kCx_[i] = 8*pi*pow3(a)*res.XC;
-        kCp_[i] = 8*pi*pow3(a)*res.YC;
-        kH_[i] = 8*pi*pow3(a)*res.YH;
+        kCp_[i] = alpha_*8*pi*pow3(a)*res.YC;
+        kH_[i] = alpha_*8*pi*pow3(a)*res.YH;
     }
 }
 
@@ -86,6 +86,7 @@ Foam::fiber::fiber
     mSeg_(),
     m_(0),
     I0_(Zero),
+    alpha_(1),
     x_(Zero),
     q_(quaternion::I),
     v_(Zero),
@@ -173,6 +174,59 @@ Foam::scalar Foam::fiber::minDiameter() const
         dMin = min(dMin, d_[i]);
     }
     return dMin;
+}
+
+
+bool Foam::fiber::straight() const
+{
+    forAll(z0_, i)
+    {
+        if (mag(z0_[i] ^ p0_) > 1e-9 || mag(s0_[i] ^ p0_) > 1e-9*length())
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+
+Foam::scalar Foam::fiber::chainBretherton() const
+{
+    scalar num = 0, den = 0;
+    forAll(s0_, i)
+    {
+        const scalar s2 = magSqr(s0_[i]);
+        num += kH_[i] + kAp_[i]*s2;
+        den += kCp_[i] + kAp_[i]*s2;
+    }
+    return num/den;
+}
+
+
+bool Foam::fiber::jefferyCorrection()
+{
+    if (!straight())
+    {
+        return false;
+    }
+
+    // B(alpha) = (alpha H + S)/(alpha C + S), H = sum kH, C = sum kCp,
+    // S = sum kAp s^2 (at alpha = 1); solve B(alpha) = B_target
+    scalar H = 0, C = 0, S = 0;
+    forAll(s0_, i)
+    {
+        H += kH_[i]/alpha_;
+        C += kCp_[i]/alpha_;
+        S += kAp_[i]*magSqr(s0_[i]);
+    }
+    const scalar re =
+        spheroidResistance::coxAspectRatio(length()/minDiameter());
+    const scalar B = spheroidResistance::bretherton(re);
+
+    // A single segment is Cox's spheroid already (S = 0)
+    alpha_ = S > 0 ? (1 - B)*S/(B*C - H) : 1;
+    calcProperties();
+    return true;
 }
 
 

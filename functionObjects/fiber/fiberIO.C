@@ -27,6 +27,7 @@ Foam::fiber::fiber(Istream& is)
     mSeg_(),
     m_(0),
     I0_(Zero),
+    alpha_(readScalar(is)),
     x_(is),
     q_(is),
     v_(is),
@@ -53,6 +54,7 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
         << f.d_ << token::SPACE
         << f.rho_ << token::SPACE
         << f.p0_ << token::SPACE
+        << f.alpha_ << token::SPACE
         << f.x_ << token::SPACE
         << f.q_ << token::SPACE
         << f.v_ << token::SPACE

@@ -483,6 +483,23 @@ Foam::fiberCloud::fiberCloud
     fiberInjection::read(injectionDict, all, origins);
     nInjected_ = all.size();
 
+    if (dict.getOrDefault<bool>("jefferyCorrection", false))
+    {
+        forAll(all, fi)
+        {
+            if (!all[fi].jefferyCorrection())
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry 'jefferyCorrection' applies to straight"
+                    << " fibers only; fiber " << all[fi].id() << " is not"
+                    << exit(FatalIOError);
+            }
+        }
+        Info<< "    Jeffery correction: segment tumbling resistance and"
+            << " strain coupling scaled by " << all[0].alpha()
+            << " (fiber 0)" << endl;
+    }
+
     distribute(injectionDict, all, origins);
 
     Info<< "    Injected " << nInjected_ << " fibers" << endl;

@@ -842,6 +842,47 @@ void testGosmanIoannides()
 }
 
 
+void testJefferyCorrection()
+{
+    // jefferyCorrection: the chain's B equals Cox's B of the whole fiber
+    // for every N with l/d >= 3 (N <= 16 for L/d = 50), and the simulated
+    // period is Jeffery's within 1 % (issue 4, section 5)
+    const scalar L = 1e-3, d = 2e-5, rho = 1380, mu = 1.6, gammaDot = 200;
+    const scalar re = coxRe(L/d);
+    const scalar Bref = (sqr(re) - 1)/(sqr(re) + 1);
+    const scalar Tref = twoPi*(re + 1/re)/gammaDot;
+
+    scalar errB = 0;
+    for (label N = 1; N <= 16; ++N)
+    {
+        fiber f(fiber::straight(0, Zero, vector(0, 1, 0), N, L/N, d, rho));
+        f.jefferyCorrection();
+        errB = max(errB, relErr(f.chainBretherton(), Bref));
+    }
+    check
+    (
+        "jefferyCorrection.chainBrethertonN1to16",
+        errB < 1e-12,
+        fmt(errB, 0, errB)
+    );
+
+    const linearFlow flow(shear(gammaDot, mu));
+    const fiberHydrodynamics hydro(1260, false, 1);
+    dictionary dict;
+    dict.add("integrator", "implicitEuler");
+    autoPtr<fiberIntegrator> integ(fiberIntegrator::New(dict));
+    for (const label N : {2, 5, 10, 16})
+    {
+        fiber f(fiber::straight(0, Zero, vector(0, 1, 0), N, L/N, d, rho));
+        f.jefferyCorrection();
+        const scalar T = period(f, flow, integ(), hydro, 1e-5, 110000);
+        std::ostringstream nm;
+        nm << "jefferyCorrection.periodN=" << N;
+        check(nm.str(), relErr(T, Tref) < 0.01, fmt(T, Tref, relErr(T, Tref)));
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
 
 int main()
@@ -858,6 +899,7 @@ int main()
         testRelaxation();
         testGravity();
         testGosmanIoannides();
+        testJefferyCorrection();
         testJefferyAndRigidity();
     }
     catch (const Foam::error& err)
