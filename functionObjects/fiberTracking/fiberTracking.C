@@ -98,15 +98,24 @@ Foam::functionObjects::fiberTracking::muCells() const
 const Foam::volScalarField&
 Foam::functionObjects::fiberTracking::turbulenceField
 (
-    const word& name,
+    const word& fieldName,
     autoPtr<volScalarField>& disk
 )
 {
-    if (mesh_.foundObject<volScalarField>(name))
+    if (mesh_.foundObject<volScalarField>(fieldName))
     {
-        return mesh_.lookupObject<volScalarField>(name);
+        return mesh_.lookupObject<volScalarField>(fieldName);
     }
-    if (!disk.valid() || disk->instance() != time_.timeName())
+    // The latest time directory up to now that holds the field (a
+    // transient run writes it only at write times)
+    const word instance
+    (
+        time_.findInstance
+        (
+            fileName::null, fieldName, IOobject::READ_IF_PRESENT
+        )
+    );
+    if (!disk.valid() || disk->instance() != instance)
     {
         disk.reset
         (
@@ -114,8 +123,8 @@ Foam::functionObjects::fiberTracking::turbulenceField
             (
                 IOobject
                 (
-                    name,
-                    time_.timeName(),
+                    fieldName,
+                    instance,
                     mesh_,
                     IOobject::MUST_READ,
                     IOobject::NO_WRITE,
@@ -124,6 +133,8 @@ Foam::functionObjects::fiberTracking::turbulenceField
                 mesh_
             )
         );
+        Info<< type() << " " << name() << ": read " << fieldName
+            << " from " << instance << endl;
     }
     return disk();
 }
