@@ -15,6 +15,7 @@ License
 #include "processorPolyPatch.H"
 #include "ListOps.H"
 #include "wallPolyPatch.H"
+#include "Switch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -48,6 +49,25 @@ scalar positiveOrDefault
             << exit(FatalIOError);
     }
     return v;
+}
+
+
+// inertialDrag: auto (default), on or off (also true/false, yes/no)
+word inertialMode(const dictionary& dict)
+{
+    const word w(dict.getOrDefault<word>("inertialDrag", "auto"));
+    if (w == "auto")
+    {
+        return w;
+    }
+    const Switch sw(w, true);
+    if (!sw.valid())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'inertialDrag' must be auto, on or off, not '" << w
+            << "'" << exit(FatalIOError);
+    }
+    return sw ? "on" : "off";
 }
 
 
@@ -433,8 +453,11 @@ Foam::fiberCloud::fiberCloud
     hydro_
     (
         rhoFluid,
-        dict.getOrDefault<bool>("inertialDrag", true),
-        positiveOrDefault(dict, "dragCoefficient", 1)
+        inertialMode(dict) != "off",
+        positiveOrDefault(dict, "dragCoefficient", 1),
+        inertialMode(dict) == "auto"
+      ? positiveOrDefault(dict, "inertialDragBound", 1e-3)
+      : 0
     ),
     integrator_(fiberIntegrator::New(dict)),
     dispersion_(fiberDispersion::New(dict)),
@@ -451,7 +474,9 @@ Foam::fiberCloud::fiberCloud
     dtSubMin_(0),
     nRemote_(0),
     nTransferred_(0),
-    nOutside_(0)
+    nOutside_(0),
+    nInertial_(0),
+    nInertialSkipped_(0)
 {
     const word rule(dict.getOrDefault<word>("wallInteraction", "rebound"));
     if (!wallRuleNames.found(rule))
@@ -531,6 +556,7 @@ void Foam::fiberCloud::evolve(const scalar dt)
     label nDeposited = 0;
 
     sampler_.resetCounters();
+    hydro_.resetCounters();
     label nRounds = 0;
     dtSubMin_ = dt;
 
@@ -651,6 +677,8 @@ void Foam::fiberCloud::evolve(const scalar dt)
     dtSubMin_ = returnReduce(dtSubMin_, minOp<scalar>());
     nRemote_ = returnReduce(sampler_.nRemote(), sumOp<label>());
     nOutside_ = returnReduce(sampler_.nOutside(), sumOp<label>());
+    nInertial_ = returnReduce(hydro_.nInertial(), sumOp<label>());
+    nInertialSkipped_ = returnReduce(hydro_.nSkipped(), sumOp<label>());
     nDeposited_ += returnReduce(nDeposited, sumOp<label>());
 
     // Remove the deposited fibers

@@ -19,12 +19,16 @@ Foam::fiberHydrodynamics::fiberHydrodynamics
 (
     const scalar rhoFluid,
     const bool inertial,
-    const scalar CD
+    const scalar CD,
+    const scalar autoBound
 )
 :
     rho_(rhoFluid),
     inertial_(inertial),
-    CD_(CD)
+    CD_(CD),
+    autoBound_(autoBound),
+    nInertial_(0),
+    nSkipped_(0)
 {}
 
 
@@ -64,10 +68,25 @@ void Foam::fiberHydrodynamics::law
     const vector a(Pp & (s.U - vOld));
     const vector b(((s.Omega() - omegaOld) ^ z) + (Pp & Ez));
 
-    scalar M0, M1, M2;
-    inertialDrag::moments(a, b, f.segmentLength(i), M0, M1, M2);
-
+    const scalar l = f.segmentLength(i);
     const scalar c = 0.5*rho_*CD_*f.segmentDiameter(i);
+
+    if (autoBound_ > 0)
+    {
+        const scalar wMax = mag(a) + 0.5*l*mag(b);
+        const scalar boundF = c*l*wMax/(mu*f.kAp(i));
+        const scalar boundT = c*pow3(l)*wMax/(12*mu*f.kCp(i));
+        if (max(boundF, boundT) < autoBound_)
+        {
+            ++nSkipped_;
+            return;
+        }
+    }
+    ++nInertial_;
+
+    scalar M0, M1, M2;
+    inertialDrag::moments(a, b, l, M0, M1, M2);
+
     const tensor Z(crossMatrix(z));
 
     k.Kuu += (c*M0)*Pp;

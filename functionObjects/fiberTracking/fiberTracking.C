@@ -178,6 +178,12 @@ void Foam::functionObjects::fiberTracking::advance(const scalar dt)
         Log << ", remote segment samples " << cloud_->nRemote()
             << ", fibers transferred " << cloud_->nTransferred();
     }
+    if (cloud_->hydrodynamics().autoBound() > 0)
+    {
+        Log << ", inertial drag in " << cloud_->nInertial() << " of "
+            << cloud_->nInertial() + cloud_->nInertialSkipped()
+            << " segment steps";
+    }
     if (cloud_->nOutside())
     {
         Log << ", segment samples outside the mesh " << cloud_->nOutside()
@@ -408,10 +414,23 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
 
     cloud_.reset(new fiberCloud(mesh_, dict, rhoInf_, g));
 
+    const fiberHydrodynamics& hydro = cloud_->hydrodynamics();
     Info<< "    Interpolation " << cloud_->sampler().scheme()
-        << ", inertial drag "
-        << (cloud_->hydrodynamics().inertial() ? "on" : "off")
-        << " (C_D " << cloud_->hydrodynamics().CD() << ")" << nl << endl;
+        << ", inertial drag ";
+    if (!hydro.inertial())
+    {
+        Info<< "off: left out";
+    }
+    else if (hydro.autoBound() > 0)
+    {
+        Info<< "auto: left out for a segment and step where its bound is"
+            << " below " << hydro.autoBound() << " of the viscous drag";
+    }
+    else
+    {
+        Info<< "on";
+    }
+    Info<< " (C_D " << hydro.CD() << ")" << nl << endl;
 
     // The fields exist now, except in post-processing, where the solver
     // builds them for each selected time (checked at the first execute)

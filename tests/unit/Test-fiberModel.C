@@ -412,6 +412,52 @@ void testInertialDrag()
 }
 
 
+void testInertialAuto()
+{
+    // inertialDrag auto: left out exactly when the bound is below 1e-3
+    const scalar l = 2e-4, d = 2e-5, rho = 1.2, mu = 1.8e-5;
+    fiber f(fiber::straight(0, Zero, vector(0, 0, 1), 1, l, d, 1380));
+    const fiberHydrodynamics on(rho, true, 1);
+    const fiberHydrodynamics autoH(rho, true, 1, 1e-3);
+    const fiberHydrodynamics off(rho, false, 1);
+    scalar errSlow = 0, errFast = 0;
+    for (const scalar slip : {1e-4, 10.0})
+    {
+        const fluidSample s(vector(slip, 0, 0), Zero, mu);
+        fiberHydrodynamics::segmentLaw k;
+        vector Fon, Fauto, Foff, T;
+        on.law(f, 0, f.R(), s, Zero, Zero, k);
+        fiberHydrodynamics::evaluate(k, s, Zero, Zero, Fon, T);
+        autoH.law(f, 0, f.R(), s, Zero, Zero, k);
+        fiberHydrodynamics::evaluate(k, s, Zero, Zero, Fauto, T);
+        off.law(f, 0, f.R(), s, Zero, Zero, k);
+        fiberHydrodynamics::evaluate(k, s, Zero, Zero, Foff, T);
+        if (slip < 1)
+        {
+            // omitted, and the omitted part is below the bound
+            errSlow = max(mag(Fauto - Foff)/mag(Foff),
+                mag(Fon - Foff)/mag(Foff)/1e-3);
+        }
+        else
+        {
+            errFast = mag(Fauto - Fon)/mag(Fon);
+        }
+    }
+    check
+    (
+        "inertialDrag.autoOmitsBelowBound",
+        errSlow < 1 && autoH.nSkipped() == 1,
+        fmt(errSlow, 1, errSlow) + " (omitted part / (1e-3 viscous))"
+    );
+    check
+    (
+        "inertialDrag.autoKeepsAboveBound",
+        errFast < 1e-15 && autoH.nInertial() == 1,
+        fmt(errFast, 0, errFast)
+    );
+}
+
+
 void testInertia()
 {
     const label N = 5;
@@ -896,6 +942,7 @@ int main()
         testBrethertonTorqueBalance();
         testInertialDrag();
         testInertia();
+        testInertialAuto();
         testRelaxation();
         testGravity();
         testGosmanIoannides();
