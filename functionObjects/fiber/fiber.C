@@ -91,6 +91,11 @@ Foam::fiber::fiber
     q_(quaternion::I),
     v_(Zero),
     omega_(Zero),
+    dxPrev_(Zero),
+    dthetaPrev_(Zero),
+    vPrev_(Zero),
+    omegaPrev_(Zero),
+    hPrev_(0),
     psi_(Zero),
     eddyTime_(0),
     nDraws_(0),
@@ -253,6 +258,7 @@ void Foam::fiber::setState
     q_ = normalize(q);
     v_ = v;
     omega_ = omega;
+    hPrev_ = 0;
 }
 
 
@@ -263,20 +269,49 @@ void Foam::fiber::move
     const scalar dt
 )
 {
-    x_ += dt*V;
+    moveBy(dt*V, dt*omega, V, omega, dt);
+}
 
-    // Exact rotation by the angle |omega| dt about omega
-    const vector theta(dt*omega);
+
+void Foam::fiber::moveBy
+(
+    const vector& dx,
+    const vector& dtheta,
+    const vector& V,
+    const vector& omega,
+    const scalar h
+)
+{
+    x_ += dx;
+
+    // Exact rotation by the angle |dtheta| about dtheta
+    const scalar phi = mag(dtheta);
+    const scalar sinc =
+        phi < 1e-4
+      ? 0.5 - sqr(phi)/48
+      : ::sin(0.5*phi)/phi;
+    const quaternion dq(::cos(0.5*phi), sinc*dtheta);
+    q_ = normalize(dq*q_);
+
+    dxPrev_ = dx;
+    dthetaPrev_ = dtheta;
+    vPrev_ = v_;
+    omegaPrev_ = omega_;
+    hPrev_ = h;
+
+    v_ = V;
+    omega_ = omega;
+}
+
+
+Foam::tensor Foam::fiber::rotation(const vector& theta)
+{
     const scalar phi = mag(theta);
     const scalar sinc =
         phi < 1e-4
       ? 0.5 - sqr(phi)/48
       : ::sin(0.5*phi)/phi;
-    const quaternion dq(::cos(0.5*phi), sinc*theta);
-
-    q_ = normalize(dq*q_);
-    v_ = V;
-    omega_ = omega;
+    return quaternion(::cos(0.5*phi), sinc*theta).R();
 }
 
 

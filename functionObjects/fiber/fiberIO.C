@@ -32,6 +32,11 @@ Foam::fiber::fiber(Istream& is)
     q_(is),
     v_(is),
     omega_(is),
+    dxPrev_(is),
+    dthetaPrev_(is),
+    vPrev_(is),
+    omegaPrev_(is),
+    hPrev_(readScalar(is)),
     psi_(is),
     eddyTime_(readScalar(is)),
     nDraws_(readLabel(is)),
@@ -59,6 +64,11 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
         << f.q_ << token::SPACE
         << f.v_ << token::SPACE
         << f.omega_ << token::SPACE
+        << f.dxPrev_ << token::SPACE
+        << f.dthetaPrev_ << token::SPACE
+        << f.vPrev_ << token::SPACE
+        << f.omegaPrev_ << token::SPACE
+        << f.hPrev_ << token::SPACE
         << f.psi_ << token::SPACE
         << f.eddyTime_ << token::SPACE
         << f.nDraws_;

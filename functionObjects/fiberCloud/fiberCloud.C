@@ -424,6 +424,7 @@ void Foam::fiberCloud::rebound
     // penetration and a millionth of the diameter
     f.translate(-((1 + 1e-3)*d + 1e-6*f.minDiameter())*n);
 
+    f.clearHistory();
     const scalar vn = f.velocity() & n;
     if (vn > 0)
     {
@@ -545,7 +546,10 @@ void Foam::fiberCloud::evolve(const scalar dt)
     }
     List<point> pts(offset.last());
     labelList cells(offset.last());
+    labelList cells2(offset.last());
     List<fluidSample> samples;
+    List<fluidSample> samples2;
+    scalarList dtStep(nF, Zero);
     List<point> segPts;
     labelList start(nF, -1);
 
@@ -593,8 +597,10 @@ void Foam::fiberCloud::evolve(const scalar dt)
 
         sampler_.sample(SubList<point>(pts, nPts), cells, samples);
 
+        // Per fiber: wall contact, step length (Eq. 22, 23)
         forAll(fibers_, fi)
         {
+            dtStep[fi] = 0;
             if (start[fi] < 0)
             {
                 continue;
@@ -653,23 +659,80 @@ void Foam::fiberCloud::evolve(const scalar dt)
             // Round-off tolerant: a count that is an integer up to
             // round-off (uniform shear) must not flip to the next one
             const label nParts = max(1, label(std::ceil(parts*(1 - 1e-9))));
-            scalar dtStep = tLeft[fi]/nParts;
+            dtStep[fi] = tLeft[fi]/nParts;
 
             // Eq. 23: not beyond the end of the fiber's eddy
             if (dispersion_->active())
             {
-                dtStep = min(dtStep, dispersion_->correct(f, s));
+                dtStep[fi] = min(dtStep[fi], dispersion_->correct(f, s));
             }
+        }
 
-            integrator_->advance(f, s, hydro_, g_, dtStep);
-            dispersion_->elapse(f, dtStep);
+        // Schemes that evaluate the forces in a predicted configuration:
+        // sample there (collective)
+        List<fluidSample>* stepSamples = &samples;
+        if (integrator_->predicts())
+        {
+            label nPts2 = 0;
+            forAll(fibers_, fi)
+            {
+                if (dtStep[fi] <= 0)
+                {
+                    start[fi] = -1;
+                    continue;
+                }
+                integrator_->predictedCentres
+                (
+                    fibers_[fi], dtStep[fi], segPts
+                );
+                const label s0 = start[fi];
+                start[fi] = nPts2;
+                forAll(segPts, i)
+                {
+                    pts[nPts2] = segPts[i];
+                    cells2[nPts2] = cells[s0 + i];
+                    ++nPts2;
+                }
+            }
+            sampler_.sample(SubList<point>(pts, nPts2), cells2, samples2);
+            if (dispersion_->active())
+            {
+                forAll(fibers_, fi)
+                {
+                    if (start[fi] >= 0)
+                    {
+                        SubList<fluidSample> s2
+                        (
+                            samples2, fibers_[fi].nSegments(), start[fi]
+                        );
+                        dispersion_->correct(fibers_[fi], s2);
+                    }
+                }
+            }
+            stepSamples = &samples2;
+        }
 
-            tLeft[fi] -= dtStep;
+        // Advance
+        forAll(fibers_, fi)
+        {
+            if (dtStep[fi] <= 0 || start[fi] < 0)
+            {
+                continue;
+            }
+            fiber& f = fibers_[fi];
+            const SubList<fluidSample> s
+            (
+                *stepSamples, f.nSegments(), start[fi]
+            );
+            integrator_->advance(f, s, hydro_, g_, dtStep[fi]);
+            dispersion_->elapse(f, dtStep[fi]);
+
+            tLeft[fi] -= dtStep[fi];
             if (tLeft[fi] <= tTol)
             {
                 tLeft[fi] = 0;
             }
-            dtSubMin_ = min(dtSubMin_, dtStep);
+            dtSubMin_ = min(dtSubMin_, dtStep[fi]);
         }
     }
 

@@ -929,6 +929,216 @@ void testJefferyCorrection()
 }
 
 
+//- One step in an analytic flow, sampled where the scheme evaluates its
+//  forces (as fiberCloud does)
+template<class Flow>
+void stepIn
+(
+    fiber& f,
+    const Flow& flow,
+    const fiberIntegrator& integ,
+    const fiberHydrodynamics& hydro,
+    const scalar dt
+)
+{
+    List<point> pts;
+    if (integ.predicts())
+    {
+        integ.predictedCentres(f, dt, pts);
+    }
+    else
+    {
+        f.segmentCentres(pts);
+    }
+    List<fluidSample> s(pts.size());
+    forAll(pts, i)
+    {
+        s[i] = flow(pts[i]);
+    }
+    integ.advance(f, s, hydro, Zero, dt);
+}
+
+
+struct shearFlow
+{
+    scalar gammaDot, mu;
+    fluidSample operator()(const point& x) const
+    {
+        tensor G(Zero);
+        G.xy() = gammaDot;
+        return fluidSample(vector(gammaDot*x.y(), 0, 0), G, mu);
+    }
+};
+
+
+//- u = (U0 sin(k y), 0, 0)
+struct waveFlow
+{
+    scalar U0, k, mu;
+    fluidSample operator()(const point& x) const
+    {
+        tensor G(Zero);
+        G.xy() = U0*k*std::cos(k*x.y());
+        return fluidSample(vector(U0*std::sin(k*x.y()), 0, 0), G, mu);
+    }
+};
+
+
+void testOrder()
+{
+    const wordList schemes({"implicitEuler", "BDF2"});
+    const scalarList expected({1, 2});
+
+    forAll(schemes, si)
+    {
+        dictionary dict;
+        dict.add("integrator", schemes[si]);
+        autoPtr<fiberIntegrator> integ(fiberIntegrator::New(dict));
+
+        // (a) Relaxation in uniform flow, error at t = tau against
+        //     1 - exp(-1), steps tau/10, tau/20, tau/40
+        {
+            const scalar l = 2e-4, d = 2e-5, mu = 1.8e-5;
+            const fiberHydrodynamics hydro(1.2, false, 1);
+            const spheroidResistance res(coxRe(l/d));
+            const scalar tau = 1380*pi*sqr(d)/4*l/(3*pi*mu*l*res.YA);
+            const linearFlow uni{vector(1, 0, 0), Zero, Zero, mu};
+            scalarList err(3);
+            forAll(err, k)
+            {
+                const label n = 10*(1 << k);
+                fiber f(fiber::straight(0, Zero, vector(0, 0, 1), 1, l, d,
+                    1380));
+                auto flow = [&](const point& x)
+                {
+                    return fluidSample(uni.U0, Zero, mu);
+                };
+                for (label j = 0; j < n; ++j)
+                {
+                    stepIn(f, flow, integ(), hydro, tau/n);
+                }
+                err[k] = mag(f.velocity().x() - (1 - std::exp(-1.0)));
+            }
+            const scalar order = std::log2(err[1]/err[2]);
+            std::ostringstream det;
+            det << "errors " << err[0] << " " << err[1] << " " << err[2]
+                << ", observed order " << order;
+            check
+            (
+                "order." + schemes[si] + ".relaxation",
+                mag(order - expected[si]) < 0.25,
+                det.str()
+            );
+        }
+
+        // (a') Stiff relaxation: bounded and settled for dt/tau to 1e8
+        {
+            const scalar l = 2e-4, d = 2e-5, mu = 1.8e-5;
+            const fiberHydrodynamics hydro(1.2, false, 1);
+            const spheroidResistance res(coxRe(l/d));
+            const scalar tau = 1380*pi*sqr(d)/4*l/(3*pi*mu*l*res.YA);
+            bool ok = true;
+            scalar worst = 0;
+            for (const scalar z : {1.0, 1e2, 1e4, 1e6, 1e8})
+            {
+                fiber f(fiber::straight(0, Zero, vector(0, 0, 1), 1, l, d,
+                    1380));
+                auto flow = [&](const point& x)
+                {
+                    return fluidSample(vector(1, 0, 0), Zero, mu);
+                };
+                for (label j = 0; j < 20; ++j)
+                {
+                    stepIn(f, flow, integ(), hydro, z*tau);
+                    const scalar v = f.velocity().x();
+                    ok = ok && std::isfinite(v) && v > -1e-12
+                        && v < 1.25;
+                    worst = max(worst, v);
+                }
+                ok = ok && mag(f.velocity().x() - 1) < (z >= 1e2 ? 1e-6 : 1e-2);
+            }
+            std::ostringstream det;
+            det << "largest v/u " << worst << ", settled to u";
+            check("stiff." + schemes[si] + ".relaxationDtOverTau1to1e8", ok,
+                det.str());
+        }
+
+        // (b) Jeffery orbit of one segment, angle at t = 0.02 s against
+        //     tan(phi) = r tan(gammaDot t/(r + 1/r))
+        {
+            const scalar L = 1e-3, d = 2e-5, gammaDot = 200;
+            const fiberHydrodynamics hydro(1260, false, 1);
+            const shearFlow flow{gammaDot, 1.6};
+            const scalar r = coxRe(L/d);
+            const scalar tEnd = 0.02;
+            const scalar phiRef =
+                std::atan2(r*std::sin(gammaDot*tEnd/(r + 1/r)),
+                    std::cos(gammaDot*tEnd/(r + 1/r)));
+            scalarList err(3);
+            forAll(err, k)
+            {
+                const label n = 100*(1 << k);
+                fiber f(fiber::straight(0, Zero, vector(0, 1, 0), 1, L, d,
+                    1380));
+                for (label j = 0; j < n; ++j)
+                {
+                    stepIn(f, flow, integ(), hydro, tEnd/n);
+                }
+                err[k] = mag(shearAngle(f.orientation()) - phiRef);
+            }
+            const scalar order = std::log2(err[1]/err[2]);
+            std::ostringstream det;
+            det << "angle errors " << err[0] << " " << err[1] << " "
+                << err[2] << " rad, observed order " << order;
+            check
+            (
+                "order." + schemes[si] + ".jefferyAngle",
+                mag(order - expected[si]) < 0.25,
+                det.str()
+            );
+        }
+
+        // (c) Five-segment fiber with inertia (air) in a non-uniform flow
+        //     u = (U0 sin ky, 0, 0): centre and orientation at 0.05 s
+        //     against the same scheme with 16 times smaller steps
+        {
+            const waveFlow flow{0.5, constant::mathematical::twoPi/0.01,
+                1.8e-5};
+            const fiberHydrodynamics hydro(1.2, false, 1);
+            const scalar tEnd = 0.05;
+            auto run = [&](const label n)
+            {
+                fiber f(fiber::straight(0, point(0, 0.0013, 0),
+                    vector(0.6, 0.8, 0), 5, 2e-4, 2e-5, 1380));
+                for (label j = 0; j < n; ++j)
+                {
+                    stepIn(f, flow, integ(), hydro, tEnd/n);
+                }
+                return f;
+            };
+            const fiber ref(run(50*16*4));
+            scalarList err(3);
+            forAll(err, k)
+            {
+                const fiber f(run(50*(1 << k)));
+                err[k] = mag(f.position() - ref.position())/2e-4
+                  + mag(f.orientation() - ref.orientation());
+            }
+            const scalar order = std::log2(err[1]/err[2]);
+            std::ostringstream det;
+            det << "errors " << err[0] << " " << err[1] << " " << err[2]
+                << ", observed order " << order;
+            check
+            (
+                "order." + schemes[si] + ".nonUniformFlow",
+                mag(order - expected[si]) < 0.3,
+                det.str()
+            );
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
 
 int main()
@@ -947,6 +1157,7 @@ int main()
         testGravity();
         testGosmanIoannides();
         testJefferyCorrection();
+        testOrder();
         testJefferyAndRigidity();
     }
     catch (const Foam::error& err)

@@ -12,12 +12,138 @@ License
 
 #include "fiberIntegrator.H"
 
+#include <Eigen/Dense>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
 {
     defineTypeNameAndDebug(fiberIntegrator, 0);
     defineRunTimeSelectionTable(fiberIntegrator, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+typedef Eigen::Matrix<double, 6, 6> Matrix6;
+typedef Eigen::Matrix<double, 6, 1> Vector6;
+
+inline void addBlock
+(
+    Matrix6& M,
+    const label r,
+    const label c,
+    const tensor& t
+)
+{
+    for (label i = 0; i < 3; ++i)
+    {
+        for (label j = 0; j < 3; ++j)
+        {
+            M(r + i, c + j) += t(i, j);
+        }
+    }
+}
+
+inline void addBlock(Vector6& b, const label r, const vector& v)
+{
+    for (label i = 0; i < 3; ++i)
+    {
+        b(r + i) += v[i];
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fiberIntegrator::predictedCentres
+(
+    const fiber& f,
+    const scalar h,
+    List<point>& pts
+) const
+{
+    vector dx;
+    tensor R;
+    predict(f, h, dx, R);
+    pts.setSize(f.nSegments());
+    forAll(pts, i)
+    {
+        pts[i] = f.position() + dx + f.segmentOffset(R, i);
+    }
+}
+
+
+void Foam::fiberIntegrator::solve
+(
+    const fiber& f,
+    const UList<fluidSample>& samples,
+    const fiberHydrodynamics& hydro,
+    const vector& g,
+    const tensor& R,
+    const scalar c,
+    const vector& bV,
+    const vector& bW,
+    const vector& wHat,
+    vector& V,
+    vector& w
+)
+{
+    const vector V0(f.velocity());
+    const vector w0(f.omega());
+    const scalar m = f.mass();
+    const tensor I(f.inertia(R));
+
+    Matrix6 M(Matrix6::Zero());
+    Vector6 rhs(Vector6::Zero());
+
+    // Inertia and gyroscopic term w x (I wHat), linear in w
+    addBlock(M, 0, 0, (c*m)*tensor::I);
+    addBlock(M, 3, 3, c*I - fiberHydrodynamics::crossMatrix(I & wHat));
+    addBlock(rhs, 0, bV + m*g);
+    addBlock(rhs, 3, bW);
+
+    fiberHydrodynamics::segmentLaw k;
+
+    forAll(samples, i)
+    {
+        const fluidSample& s = samples[i];
+        const vector r(f.segmentOffset(R, i));
+        const tensor S(fiberHydrodynamics::crossMatrix(r));
+
+        hydro.law(f, i, R, s, V0 + (w0 ^ r), w0, k);
+
+        // F_i = -Kuu V + (Kuu S - Kuw) w + Fs, with v_i = V - S w
+        const tensor FV(-k.Kuu);
+        const tensor Fw((k.Kuu & S) - k.Kuw);
+        const vector Fs((k.Kuu & s.U) + (k.Kuw & s.Omega()) + k.f0);
+
+        const tensor TV(-k.Kwu);
+        const tensor Tw((k.Kwu & S) - k.Kww);
+        const vector Ts((k.Kwu & s.U) + (k.Kww & s.Omega()) + k.t0);
+
+        // Linear momentum
+        addBlock(M, 0, 0, -FV);
+        addBlock(M, 0, 3, -Fw);
+        addBlock(rhs, 0, Fs);
+
+        // Angular momentum about the centre of mass: T_i + r x F_i
+        addBlock(M, 3, 0, -(TV + (S & FV)));
+        addBlock(M, 3, 3, -(Tw + (S & Fw)));
+        addBlock(rhs, 3, Ts + (S & Fs) + (r ^ (f.segmentMass(i)*g)));
+    }
+
+    const Vector6 x(M.partialPivLu().solve(rhs));
+
+    V = vector(x(0), x(1), x(2));
+    w = vector(x(3), x(4), x(5));
 }
 
 

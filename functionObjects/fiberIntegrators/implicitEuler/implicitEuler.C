@@ -13,7 +13,6 @@ License
 #include "implicitEuler.H"
 #include "addToRunTimeSelectionTable.H"
 
-#include <Eigen/Dense>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -25,44 +24,6 @@ namespace fiberIntegrators
     addToRunTimeSelectionTable(fiberIntegrator, implicitEuler, dictionary);
 }
 }
-
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-typedef Eigen::Matrix<double, 6, 6> Matrix6;
-typedef Eigen::Matrix<double, 6, 1> Vector6;
-
-inline void addBlock
-(
-    Matrix6& M,
-    const label r,
-    const label c,
-    const tensor& t
-)
-{
-    for (label i = 0; i < 3; ++i)
-    {
-        for (label j = 0; j < 3; ++j)
-        {
-            M(r + i, c + j) += t(i, j);
-        }
-    }
-}
-
-inline void addBlock(Vector6& b, const label r, const vector& v)
-{
-    for (label i = 0; i < 3; ++i)
-    {
-        b(r + i) += v[i];
-    }
-}
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -82,54 +43,21 @@ void Foam::fiberIntegrators::implicitEuler::advance
     const scalar dt
 ) const
 {
+    // Eq. 14-15: c = 1/dt, history m V_n/dt and I w_n/dt, gyroscopic
+    // term with w_n, everything in the configuration of level n
     const tensor R(f.R());
-    const vector V0(f.velocity());
-    const vector w0(f.omega());
-    const scalar m = f.mass();
-    const tensor I(f.inertia(R));
+    vector V, w;
+    solve
+    (
+        f, samples, hydro, g, R, 1/dt,
+        f.mass()*f.velocity()/dt,
+        (f.inertia(R) & f.omega())/dt,
+        f.omega(),
+        V, w
+    );
 
-    Matrix6 M(Matrix6::Zero());
-    Vector6 rhs(Vector6::Zero());
-
-    // Inertia and gyroscopic term (semi-implicit as in Eq. 15)
-    addBlock(M, 0, 0, (m/dt)*tensor::I);
-    addBlock(M, 3, 3, I/dt - fiberHydrodynamics::crossMatrix(I & w0));
-    addBlock(rhs, 0, (m/dt)*V0 + m*g);
-    addBlock(rhs, 3, (I & w0)/dt);
-
-    fiberHydrodynamics::segmentLaw k;
-
-    forAll(samples, i)
-    {
-        const fluidSample& s = samples[i];
-        const vector r(f.segmentOffset(R, i));
-        const tensor S(fiberHydrodynamics::crossMatrix(r));
-
-        hydro.law(f, i, R, s, V0 + (w0 ^ r), w0, k);
-
-        // F_i = -Kuu V + (Kuu S - Kuw) w + Fs, with v_i = V - S w
-        const tensor FV(-k.Kuu);
-        const tensor Fw((k.Kuu & S) - k.Kuw);
-        const vector Fs((k.Kuu & s.U) + (k.Kuw & s.Omega()) + k.f0);
-
-        const tensor TV(-k.Kwu);
-        const tensor Tw((k.Kwu & S) - k.Kww);
-        const vector Ts((k.Kwu & s.U) + (k.Kww & s.Omega()) + k.t0);
-
-        // Linear momentum
-        addBlock(M, 0, 0, -FV);
-        addBlock(M, 0, 3, -Fw);
-        addBlock(rhs, 0, Fs);
-
-        // Angular momentum about the centre of mass: T_i + r x F_i
-        addBlock(M, 3, 0, -(TV + (S & FV)));
-        addBlock(M, 3, 3, -(Tw + (S & Fw)));
-        addBlock(rhs, 3, Ts + (S & Fs) + (r ^ (f.segmentMass(i)*g)));
-    }
-
-    const Vector6 x(M.partialPivLu().solve(rhs));
-
-    f.move(vector(x(0), x(1), x(2)), vector(x(3), x(4), x(5)), dt);
+    // Eq. 16-17, rigid
+    f.move(V, w, dt);
 }
 
 
