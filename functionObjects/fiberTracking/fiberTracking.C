@@ -15,6 +15,8 @@ License
 #include "transportModel.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <ctime>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -165,14 +167,17 @@ void Foam::functionObjects::fiberTracking::updateFields()
 
 void Foam::functionObjects::fiberTracking::advance(const scalar dt)
 {
+    const std::clock_t c0 = std::clock();
     cloud_->evolve(dt);
+    cpuFibers_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
     fiberTime_ += dt;
 
     writeStatistics();
 
     Log << type() << " " << name() << " execute: fiber time " << fiberTime_
         << ", sub-steps " << cloud_->nSubMax()
-        << " (smallest " << cloud_->dtSubMin() << " s)";
+        << " (smallest " << cloud_->dtSubMin() << " s), fiber CPU time "
+        << cpuFibers_ << " s";
     if (Pstream::parRun())
     {
         Log << ", remote segment samples " << cloud_->nRemote()
@@ -277,6 +282,7 @@ Foam::functionObjects::fiberTracking::fiberTracking
     duration_(0),
     outputInterval_(0),
     started_(false),
+    cpuFibers_(0),
     dict_(dict),
     cloud_(),
     gradU_(),

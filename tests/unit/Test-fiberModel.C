@@ -1139,6 +1139,178 @@ void testOrder()
 }
 
 
+void testExtremes()
+{
+    dictionary dict;
+    dict.add("integrator", "implicitEuler");
+    autoPtr<fiberIntegrator> integ(fiberIntegrator::New(dict));
+
+    // Aspect ratio and segment count: whole-fiber L/d from 3 to 1000,
+    // 1 to 100 segments (segments with l/d >= 3): the chain turns with its
+    // closed-form period and stays rigid
+    {
+        const scalar d = 2e-5, gammaDot = 200;
+        const linearFlow flow(shear(gammaDot, 1.6));
+        const fiberHydrodynamics hydro(1260, false, 1);
+        struct shape { scalar rc; label N; };
+        scalar worst = 0, worstRigid = 0;
+        std::ostringstream det;
+        for
+        (
+            const shape& sh
+          : List<shape>({{3, 1}, {10, 1}, {10, 3}, {100, 1}, {100, 30},
+                {1000, 1}, {1000, 10}, {1000, 100}})
+        )
+        {
+            const scalar L = sh.rc*d;
+            fiber f(fiber::straight(0, Zero, vector(0, 1, 0), sh.N, L/sh.N,
+                d, 1380));
+            const scalar Tref = chainPeriod(sh.N, L, d, gammaDot);
+            const scalar dt = Tref/20000;
+            const scalar T = period(f, flow, integ(), hydro, dt, 22000);
+            const scalar e = relErr(T, Tref);
+            worst = max(worst, e);
+            List<point> pts;
+            f.segmentCentres(pts);
+            for (label i = 0; i + 1 < sh.N; ++i)
+            {
+                worstRigid = max
+                (
+                    worstRigid,
+                    relErr(mag(pts[i + 1] - pts[i]), L/sh.N)
+                );
+            }
+            det << " L/d " << sh.rc << " N " << sh.N << ": " << e << ";";
+        }
+        check
+        (
+            "extreme.aspectRatioAndSegments.period",
+            worst < 1e-4 && worstRigid < 1e-12,
+            "relative period errors" + det.str()
+        );
+    }
+
+    // Segment Reynolds number 1e-4 to 1e5: a heavy broadside segment
+    // falling through still air reaches the terminal velocity of viscous
+    // plus inertial drag, m g = A v + (rho C_D d l/2) v^2, a quadratic
+    // with one positive root
+    {
+        const scalar l = 2e-4, d = 2e-5, mu = 1.8e-5, rhoF = 1.2;
+        const spheroidResistance res(coxRe(l/d));
+        const scalar A = 6*pi*mu*(l/2)*res.YA;
+        const scalar c = 0.5*rhoF*d*l;
+        const fiberHydrodynamics hydro(rhoF, true, 1);
+        const linearFlow still{Zero, Zero, Zero, mu};
+        scalar worst = 0;
+        std::ostringstream det;
+        for (const scalar Re : {1e-4, 1e-2, 1.0, 1e2, 1e4, 1e5})
+        {
+            const scalar vt = Re*mu/(rhoF*d);
+            const scalar m = 1380*pi*sqr(d)/4*l;
+            const scalar g = (A*vt + c*sqr(vt))/m;  // gravity giving Re
+            fiber f(fiber::straight(0, Zero, vector(1, 0, 0), 1, l, d,
+                1380));
+            const scalar tau = m/(A + c*vt);
+            List<fluidSample> s;
+            for (label k = 0; k < 400; ++k)
+            {
+                still.sample(f, s);
+                integ->advance(f, s, hydro, vector(0, -g, 0), 0.1*tau);
+            }
+            const scalar e = relErr(-f.velocity().y(), vt);
+            worst = max(worst, e);
+            det << " Re " << Re << ": " << e << ";";
+        }
+        check
+        (
+            "extreme.reynolds1e-4to1e5.terminalVelocity",
+            worst < 1e-8,
+            "relative errors" + det.str()
+        );
+    }
+
+    // Heavy fiber (density ratio 1e4 in water-like fluid) under gravity:
+    // terminal velocity of a single segment (Stokes), oblique
+    {
+        const scalar l = 2e-4, d = 2e-5, mu = 1e-3, rhoF = 1000;
+        const vector p(vector(1, 2, 0)/std::sqrt(5.0));
+        fiber f(fiber::straight(0, Zero, p, 1, l, d, 1e4*rhoF));
+        const spheroidResistance res(coxRe(l/d));
+        const scalar a = l/2, m = 1e7*pi*sqr(d)/4*l;
+        const vector g(0, -9.81, 0);
+        const vector gp((g & p)*p);
+        const vector ref
+        (
+            m*gp/(6*pi*mu*a*res.XA) + m*(g - gp)/(6*pi*mu*a*res.YA)
+        );
+        const fiberHydrodynamics hydro(rhoF, false, 1);
+        const linearFlow still{Zero, Zero, Zero, mu};
+        List<fluidSample> s;
+        // tau ~ 1 s: 40 s in steps of 0.01 s
+        for (label k = 0; k < 4000; ++k)
+        {
+            still.sample(f, s);
+            integ->advance(f, s, hydro, g, 1e-2);
+        }
+        const scalar e = mag(f.velocity() - ref)/mag(ref);
+        check
+        (
+            "extreme.heavyFiberDensityRatio1e4.terminalVelocity",
+            e < 1e-8,
+            fmt(mag(f.velocity()), mag(ref), e)
+        );
+    }
+
+    // At rest in a fast flow (100 m/s, air), steps of 1e-6 s (0.2 tau ...
+    // tau/100): reaches the flow velocity, no overshoot; zero shear and
+    // zero velocity: nothing moves; two coincident fibers move identically
+    {
+        const scalar l = 2e-4, d = 2e-5, mu = 1.8e-5;
+        const fiberHydrodynamics hydro(1.2, true, 1);
+        const linearFlow fast{vector(100, 0, 0), Zero, Zero, mu};
+        fiber a(fiber::straight(0, Zero, vector(0, 1, 0), 5, l, d, 1380));
+        fiber b(fiber::straight(1, Zero, vector(0, 1, 0), 5, l, d, 1380));
+        List<fluidSample> s;
+        scalar vMax = 0;
+        for (label k = 0; k < 20000; ++k)
+        {
+            fast.sample(a, s);
+            integ->advance(a, s, hydro, Zero, 1e-5);
+            fast.sample(b, s);
+            integ->advance(b, s, hydro, Zero, 1e-5);
+            vMax = max(vMax, a.velocity().x());
+        }
+        check
+        (
+            "extreme.atRestInFastFlow",
+            vMax <= 100*(1 + 1e-12) && relErr(a.velocity().x(), 100) < 1e-6,
+            fmt(a.velocity().x(), 100, relErr(a.velocity().x(), 100))
+        );
+        check
+        (
+            "extreme.coincidentFibers",
+            mag(a.position() - b.position()) == 0
+         && mag(a.orientation() - b.orientation()) == 0,
+            "identical states after 20000 steps"
+        );
+        fiber c(fiber::straight(0, Zero, vector(0, 1, 0), 5, l, d, 1380));
+        const linearFlow none{Zero, Zero, Zero, mu};
+        for (label k = 0; k < 100; ++k)
+        {
+            none.sample(c, s);
+            integ->advance(c, s, hydro, Zero, 1e-3);
+        }
+        check
+        (
+            "extreme.zeroVelocityZeroShear",
+            mag(c.position()) == 0 && mag(c.velocity()) == 0
+         && mag(c.omega()) == 0,
+            "fiber stays at rest"
+        );
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
 
 int main()
@@ -1158,6 +1330,7 @@ int main()
         testGosmanIoannides();
         testJefferyCorrection();
         testOrder();
+        testExtremes();
         testJefferyAndRigidity();
     }
     catch (const Foam::error& err)
