@@ -477,7 +477,8 @@ Foam::fiberCloud::fiberCloud
     nTransferred_(0),
     nOutside_(0),
     nInertial_(0),
-    nInertialSkipped_(0)
+    nInertialSkipped_(0),
+    nSegmentSteps_(0)
 {
     const word rule(dict.getOrDefault<word>("wallInteraction", "rebound"));
     if (!wallRuleNames.found(rule))
@@ -725,6 +726,7 @@ void Foam::fiberCloud::evolve(const scalar dt)
                 *stepSamples, f.nSegments(), start[fi]
             );
             integrator_->advance(f, s, hydro_, g_, dtStep[fi]);
+            nSegmentSteps_ += f.nSegments();
             dispersion_->elapse(f, dtStep[fi]);
 
             tLeft[fi] -= dtStep[fi];

@@ -177,7 +177,8 @@ void Foam::functionObjects::fiberTracking::advance(const scalar dt)
     Log << type() << " " << name() << " execute: fiber time " << fiberTime_
         << ", sub-steps " << cloud_->nSubMax()
         << " (smallest " << cloud_->dtSubMin() << " s), fiber CPU time "
-        << cpuFibers_ << " s";
+        << cpuFibers_ << " s for " << cloud_->nSegmentSteps()
+        << " segment steps";
     if (Pstream::parRun())
     {
         Log << ", remote segment samples " << cloud_->nRemote()
