@@ -458,7 +458,8 @@ Foam::fiberCloud::fiberCloud
         positiveOrDefault(dict, "dragCoefficient", 1),
         inertialMode(dict) == "auto"
       ? positiveOrDefault(dict, "inertialDragBound", 1e-3)
-      : 0
+      : 0,
+        dict.getOrDefault<Switch>("viscousDrag", true)
     ),
     integrator_(fiberIntegrator::New(dict)),
     dispersion_(fiberDispersion::New(dict)),

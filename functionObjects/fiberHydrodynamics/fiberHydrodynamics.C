@@ -20,10 +20,12 @@ Foam::fiberHydrodynamics::fiberHydrodynamics
     const scalar rhoFluid,
     const bool inertial,
     const scalar CD,
-    const scalar autoBound
+    const scalar autoBound,
+    const bool viscous
 )
 :
     rho_(rhoFluid),
+    viscous_(viscous),
     inertial_(inertial),
     CD_(CD),
     autoBound_(autoBound),
@@ -52,12 +54,21 @@ void Foam::fiberHydrodynamics::law
     const vector Ez(s.E() & z);
 
     // Viscous, Eq. 10-11
-    k.Kuu = mu*(f.kAx(i)*zz + f.kAp(i)*Pp);
-    k.Kww = mu*(f.kCx(i)*zz + f.kCp(i)*Pp);
     k.Kuw = Zero;
     k.Kwu = Zero;
     k.f0 = Zero;
-    k.t0 = (mu*f.kH(i))*(z ^ Ez);
+    if (viscous_)
+    {
+        k.Kuu = mu*(f.kAx(i)*zz + f.kAp(i)*Pp);
+        k.Kww = mu*(f.kCx(i)*zz + f.kCp(i)*Pp);
+        k.t0 = (mu*f.kH(i))*(z ^ Ez);
+    }
+    else
+    {
+        k.Kuu = Zero;
+        k.Kww = Zero;
+        k.t0 = Zero;
+    }
 
     if (!inertial_)
     {

@@ -422,6 +422,10 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
     cloud_.reset(new fiberCloud(mesh_, dict, rhoInf_, g));
 
     const fiberHydrodynamics& hydro = cloud_->hydrodynamics();
+    if (!hydro.viscous())
+    {
+        Info<< "    viscousDrag off: viscous force and torque left out" << nl;
+    }
     Info<< "    Interpolation " << cloud_->sampler().scheme()
         << ", inertial drag ";
     if (!hydro.inertial())

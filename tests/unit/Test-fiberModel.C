@@ -458,6 +458,29 @@ void testInertialAuto()
 }
 
 
+void testViscousSwitch()
+{
+    // viscousDrag off: only the inertial cross-flow force remains,
+    // rho C_D d l |a| a/2 for a broadside segment
+    const scalar l = 2e-4, d = 2e-5, rho = 1.2;
+    fiber f(fiber::straight(0, Zero, vector(0, 0, 1), 1, l, d, 1380));
+    const fiberHydrodynamics inertialOnly(rho, true, 1, 0, false);
+    const fluidSample s(vector(3, 4, 0), Zero, 1.8e-5);
+    fiberHydrodynamics::segmentLaw k;
+    inertialOnly.law(f, 0, f.R(), s, Zero, Zero, k);
+    vector F, T;
+    fiberHydrodynamics::evaluate(k, s, Zero, Zero, F, T);
+    const vector ref(0.5*rho*d*l*mag(s.U)*s.U);
+    const scalar err = mag(F - ref)/mag(ref);
+    check
+    (
+        "switch.viscousDragOff",
+        err < 1e-12 && mag(T) < 1e-30,
+        fmt(mag(F), mag(ref), err)
+    );
+}
+
+
 void testInertia()
 {
     const label N = 5;
@@ -1325,6 +1348,7 @@ int main()
         testInertialDrag();
         testInertia();
         testInertialAuto();
+        testViscousSwitch();
         testRelaxation();
         testGravity();
         testGosmanIoannides();
