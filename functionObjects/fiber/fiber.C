@@ -285,13 +285,7 @@ void Foam::fiber::moveBy
     x_ += dx;
 
     // Exact rotation by the angle |dtheta| about dtheta
-    const scalar phi = mag(dtheta);
-    const scalar sinc =
-        phi < 1e-4
-      ? 0.5 - sqr(phi)/48
-      : ::sin(0.5*phi)/phi;
-    const quaternion dq(::cos(0.5*phi), sinc*dtheta);
-    q_ = normalize(dq*q_);
+    q_ = normalize(rotationQuaternion(dtheta)*q_);
 
     dxPrev_ = dx;
     dthetaPrev_ = dtheta;
@@ -304,14 +298,21 @@ void Foam::fiber::moveBy
 }
 
 
-Foam::tensor Foam::fiber::rotation(const vector& theta)
+Foam::quaternion Foam::fiber::rotationQuaternion(const vector& theta)
 {
+    // sin(phi/2)/phi by its Taylor series for small angles
     const scalar phi = mag(theta);
     const scalar sinc =
         phi < 1e-4
       ? 0.5 - sqr(phi)/48
       : ::sin(0.5*phi)/phi;
-    return quaternion(::cos(0.5*phi), sinc*theta).R();
+    return quaternion(::cos(0.5*phi), sinc*theta);
+}
+
+
+Foam::tensor Foam::fiber::rotation(const vector& theta)
+{
+    return rotationQuaternion(theta).R();
 }
 
 
