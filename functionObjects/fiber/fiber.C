@@ -246,22 +246,6 @@ void Foam::fiber::segmentCentres(List<point>& pts) const
 }
 
 
-void Foam::fiber::setState
-(
-    const point& x,
-    const quaternion& q,
-    const vector& v,
-    const vector& omega
-)
-{
-    x_ = x;
-    q_ = normalize(q);
-    v_ = v;
-    omega_ = omega;
-    hPrev_ = 0;
-}
-
-
 void Foam::fiber::move
 (
     const vector& V,

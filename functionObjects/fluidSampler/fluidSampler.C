@@ -300,26 +300,6 @@ bool Foam::fluidSampler::walk
 }
 
 
-Foam::label Foam::fluidSampler::locate
-(
-    const point& p,
-    const label seed,
-    label& hitFace
-) const
-{
-    hitFace = -1;
-    if (seed >= 0)
-    {
-        label celli = seed;
-        if (walk(p, celli, hitFace))
-        {
-            return celli;
-        }
-    }
-    return mesh_.findCell(p);
-}
-
-
 bool Foam::fluidSampler::processorFace
 (
     const label hitFace,

@@ -115,6 +115,7 @@ void Foam::fiberIntegrator::solve
     forAll(samples, i)
     {
         const fluidSample& s = samples[i];
+        const vector Omega(s.Omega());
         const vector r(f.segmentOffset(R, i));
         const tensor S(fiberHydrodynamics::crossMatrix(r));
 
@@ -123,11 +124,11 @@ void Foam::fiberIntegrator::solve
         // F_i = -Kuu V + (Kuu S - Kuw) w + Fs, with v_i = V - S w
         const tensor FV(-k.Kuu);
         const tensor Fw((k.Kuu & S) - k.Kuw);
-        const vector Fs((k.Kuu & s.U) + (k.Kuw & s.Omega()) + k.f0);
+        const vector Fs((k.Kuu & s.U) + (k.Kuw & Omega) + k.f0);
 
         const tensor TV(-k.Kwu);
         const tensor Tw((k.Kwu & S) - k.Kww);
-        const vector Ts((k.Kwu & s.U) + (k.Kww & s.Omega()) + k.t0);
+        const vector Ts((k.Kwu & s.U) + (k.Kww & Omega) + k.t0);
 
         // Linear momentum
         addBlock(M, 0, 0, -FV);
