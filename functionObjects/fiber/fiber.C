@@ -99,8 +99,7 @@ Foam::fiber::fiber
     psi_(Zero),
     eddyTime_(0),
     nDraws_(0),
-    cell_(-1),
-    segCells_(lengths.size(), -1)
+    location_()
 {
     forAll(z0_, i)
     {
@@ -254,6 +253,25 @@ void Foam::fiber::move
 )
 {
     moveBy(dt*V, dt*omega, V, omega, dt);
+}
+
+
+void Foam::fiber::transform(const vectorTensorTransform& T)
+{
+    x_ = T.transformPosition(x_);
+    if (!T.hasR())
+    {
+        return;
+    }
+    const tensor& R = T.R();
+    q_ = normalize(quaternion(R)*q_);
+    v_ = R & v_;
+    omega_ = R & omega_;
+    dxPrev_ = R & dxPrev_;
+    dthetaPrev_ = R & dthetaPrev_;
+    vPrev_ = R & vPrev_;
+    omegaPrev_ = R & omegaPrev_;
+    psi_ = R & psi_;
 }
 
 

@@ -40,8 +40,7 @@ Foam::fiber::fiber(Istream& is)
     psi_(is),
     eddyTime_(readScalar(is)),
     nDraws_(readLabel(is)),
-    cell_(-1),
-    segCells_(l_.size(), -1)
+    location_()
 {
     is.check(FUNCTION_NAME);
     calcProperties();

@@ -13,6 +13,7 @@ License
 #include "fiberCloud.H"
 #include "PstreamBuffers.H"
 #include "processorPolyPatch.H"
+#include "globalMeshData.H"
 #include "ListOps.H"
 #include "wallPolyPatch.H"
 #include "Switch.H"
@@ -186,6 +187,7 @@ void Foam::fiberCloud::distribute
     List<point> pts;
     forAll(all, fi)
     {
+        constraint_.constrain(all[fi]);
         const label c = mesh_.findCell(all[fi].position());
         if (c >= 0)
         {
@@ -210,6 +212,16 @@ void Foam::fiberCloud::distribute
     forAll(all, fi)
     {
         const fiberInjection::origin& o = origins[fi];
+        if (!constraint_.inPlane(all[fi]))
+        {
+            FatalIOErrorInFunction(injectionDict)
+                << "Fiber " << o.index << " of set '" << o.set
+                << "' (id " << all[fi].id() << ") does not lie in the"
+                << " solution plane of this 2-D case (free directions "
+                << constraint_.freeDirections() << ")." << nl
+                << "    Give its 'direction' in the plane"
+                << exit(FatalIOError);
+        }
         if (owner[fi] == nProcs)
         {
             FatalIOErrorInFunction(injectionDict)
@@ -250,166 +262,552 @@ void Foam::fiberCloud::distribute
         if (owner[fi] == myProc)
         {
             fiber* fPtr = all.set(fi, nullptr).ptr();
-            fPtr->cell() = centreCell[fi];
-            fPtr->segmentCells() = centreCell[fi];
+            tracker_.locate
+            (
+                fPtr->position(),
+                fPtr->location(),
+                centreCell[fi]
+            );
             fibers_.set(nMine++, fPtr);
         }
     }
 }
 
 
-void Foam::fiberCloud::relocate()
+void Foam::fiberCloud::calcCellLength()
 {
-    const label nProcs = Pstream::nProcs();
-    List<DynamicList<label>> sendFibers(nProcs);
-    List<DynamicList<label>> sendFaces(nProcs);
-    boolList keep(fibers_.size(), true);
-    label nEscaped = 0;
-    label nDeposited = 0;
-
-    forAll(fibers_, fi)
+    const scalarField& V = mesh_.V();
+    cellLength_.setSize(V.size());
+    if (constraint_.active())
     {
-        fiber& f = fibers_[fi];
-        label hitFace = -1;
-        label celli = f.cell();
-        if (sampler_.walk(f.position(), celli, hitFace))
+        // 2-D: the side of a square of the cell's area in the plane
+        const vector span(mesh_.bounds().span());
+        const vector& fr = constraint_.freeDirections();
+        scalar depth = 1;
+        label nFree = 0;
+        for (direction i = 0; i < vector::nComponents; ++i)
         {
-            f.cell() = celli;
+            if (fr[i] > 0)
+            {
+                ++nFree;
+            }
+            else
+            {
+                depth *= span[i];
+            }
+        }
+        forAll(V, celli)
+        {
+            cellLength_[celli] =
+                std::pow(V[celli]/depth, 1.0/max(nFree, label(1)));
+        }
+    }
+    else
+    {
+        forAll(V, celli)
+        {
+            cellLength_[celli] = std::cbrt(V[celli]);
+        }
+    }
+}
+
+
+bool Foam::fiberCloud::sampleSegments
+(
+    const label fi,
+    const vector& dx,
+    const tensor& R,
+    UList<fluidSample>& s,
+    DynamicList<fluidSampler::request>* reqs,
+    DynamicList<remoteSegment>* remote
+) const
+{
+    const fiber& f = fibers_[fi];
+    const trackedPoint& centre = f.location();
+    const point xc(tracker_.position(centre));
+    fluidSampler::request req;
+    bool allLocal = true;
+
+    for (label i = 0; i < f.nSegments(); ++i)
+    {
+        const vector d(f.position() + dx + f.segmentOffset(R, i) - xc);
+        trackedPoint tp(centre);
+        const fiberTracker::hit h =
+            magSqr(d) > 0
+          ? tracker_.track(tp, d)
+          : fiberTracker::hit
+            {
+                fiberTracker::stop::none, -1, Zero, false,
+                vectorTensorTransform::I
+            };
+
+        if (sampler_.sample(tp, h, s[i], req))
+        {
             continue;
         }
-
-        label proci, patchFace;
-        if (sampler_.processorFace(hitFace, proci, patchFace))
+        if (!reqs)
         {
-            sendFibers[proci].append(fi);
-            sendFaces[proci].append(patchFace);
-            keep[fi] = false;
-            continue;
+            return false;
         }
+        allLocal = false;
+        reqs->append(req);
+        remote->append(remoteSegment{fi, i, h});
+    }
+    return allLocal;
+}
 
-        const label found = mesh_.findCell(f.position());
-        if (found >= 0)
-        {
-            f.cell() = found;
-            continue;
-        }
 
-        const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+bool Foam::fiberCloud::prepare
+(
+    const label fi,
+    UList<fluidSample>& s,
+    scalar& h
+)
+{
+    fiber& f = fibers_[fi];
+
+    // Wall contact: the deepest segment beyond a wall
+    label iWall = -1;
+    forAll(s, i)
+    {
         if
         (
-            hitFace >= 0
-         && isA<wallPolyPatch>(pbm[pbm.whichPatch(hitFace)])
+            s[i].beyondWall()
+         && (iWall < 0 || s[i].dWall > s[iWall].dWall)
         )
         {
-            const vector& Sf = mesh_.faceAreas()[hitFace];
-            const vector n(Sf/mag(Sf));
-            const scalar d =
-                (f.position() - mesh_.faceCentres()[hitFace]) & n;
-            if (wallRule_ == wallRule::rebound)
+            iWall = i;
+        }
+    }
+    if (iWall >= 0)
+    {
+        if (wallRule_ == wallRule::deposit && !s[iWall].mirror)
+        {
+            deposit(fi);
+            return false;
+        }
+        // Back inside, then the step goes on with these samples, taken
+        // on the wall face (a fiber pressed onto a wall slides along it)
+        rebound
+        (
+            f,
+            s[iWall].nWall,
+            s[iWall].dWall,
+            s[iWall].mirror ? 1 : restitution_
+        );
+    }
+
+    // Equal parts of the time left: Eq. 22 and the cell limit
+    scalar gammaDot = 0;
+    scalar speed = mag(f.velocity()) + 0.5*mag(f.omega())*f.length();
+    forAll(s, i)
+    {
+        gammaDot = max(gammaDot, s[i].shearRate());
+        speed = max(speed, mag(s[i].U));
+    }
+    const scalar rc = f.length()/f.minDiameter();
+    const scalar cellLength = cellLength_[f.location().celli];
+    const scalar parts = tLeft_[fi]*max
+    (
+        rc*gammaDot/shearStepFactor_,
+        speed/(maxCo_*cellLength)
+    );
+    if (parts > labelMax/2)
+    {
+        FatalErrorInFunction
+            << "Fiber " << f.id() << " needs " << parts
+            << " sub-steps over " << tLeft_[fi] << " s (shear rate "
+            << gammaDot << ", speed " << speed << ")" << exit(FatalError);
+    }
+    // Round-off tolerant: a count that is an integer up to round-off
+    // (uniform shear) must not flip to the next one
+    const label nParts = max(1, label(std::ceil(parts*(1 - 1e-9))));
+    h = tLeft_[fi]/nParts;
+
+    // Eq. 23: not beyond the end of the fiber's eddy
+    if (dispersion_->active())
+    {
+        h = min(h, dispersion_->correct(f, s));
+    }
+    constraint_.constrain(s);
+    return true;
+}
+
+
+void Foam::fiberCloud::finish
+(
+    const label fi,
+    const UList<fluidSample>& s,
+    const scalar h
+)
+{
+    fiber& f = fibers_[fi];
+    const point x0(f.position());
+
+    integrator_->advance(f, s, hydro_, g_, h);
+    constraint_.constrain(f);
+    nSegmentSteps_ += f.nSegments();
+    dispersion_->elapse(f, h);
+    dtSubMin_ = min(dtSubMin_, h);
+    ++nSub_[fi];
+    tLeft_[fi] -= h;
+    if (tLeft_[fi] <= 1e-9*h)
+    {
+        tLeft_[fi] = 0;
+        status_[fi] = status::done;
+    }
+
+    // Move the centre's location along
+    const fiberTracker::hit c =
+        tracker_.track(f.location(), f.position() - x0);
+    if (c.crossed)
+    {
+        f.transform(c.T);
+    }
+
+    switch (c.where)
+    {
+        case fiberTracker::stop::none:
+        {
+            break;
+        }
+        case fiberTracker::stop::processor:
+        {
+            const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+            const label patchi = pbm.whichPatch(c.face);
+            const processorPolyPatch& pp =
+                refCast<const processorPolyPatch>(pbm[patchi]);
+            status_[fi] = status::moving;
+            toProc_[fi] = pp.neighbProcNo();
+            toPatch_[fi] =
+                mesh_.globalData().processorPatchNeighbours()[patchi];
+            toFace_[fi] = c.face - pp.start();
+            break;
+        }
+        case fiberTracker::stop::wall:
+        case fiberTracker::stop::symmetry:
+        {
+            centreAtWall(fi, c, c.where == fiberTracker::stop::symmetry);
+            break;
+        }
+        case fiberTracker::stop::outlet:
+        {
+            status_[fi] = status::gone;
+            ++nEscapedStep_;
+            break;
+        }
+    }
+}
+
+
+void Foam::fiberCloud::centreAtWall
+(
+    const label fi,
+    const fiberTracker::hit& c,
+    const bool mirror
+)
+{
+    if (wallRule_ == wallRule::deposit && !mirror)
+    {
+        deposit(fi);
+        return;
+    }
+    fiber& f = fibers_[fi];
+    const vector& Sf = mesh_.faceAreas()[c.face];
+    const vector n(Sf/mag(Sf));
+    const point onWall(tracker_.position(f.location()));
+    rebound(f, n, max(c.left & n, scalar(0)), mirror ? 1 : restitution_);
+    const fiberTracker::hit back =
+        tracker_.track(f.location(), f.position() - onWall);
+    if (back.where != fiberTracker::stop::none || back.crossed)
+    {
+        // A rebound that did not bring it back (a corner): deposited
+        deposit(fi);
+    }
+}
+
+
+void Foam::fiberCloud::runLocal(const label fi)
+{
+    fiber& f = fibers_[fi];
+    const label n = f.nSegments();
+    if (samples_.size() < n)
+    {
+        samples_.setSize(n);
+        samples2_.setSize(n);
+    }
+    SubList<fluidSample> s(samples_, n);
+    SubList<fluidSample> s2(samples2_, n);
+
+    while (status_[fi] == status::running)
+    {
+        if (!sampleSegments(fi, Zero, f.R(), s))
+        {
+            status_[fi] = status::waiting;
+            return;
+        }
+        scalar h;
+        if (!prepare(fi, s, h))
+        {
+            return;
+        }
+        if (integrator_->predicts())
+        {
+            vector dx;
+            tensor R;
+            integrator_->predict(f, h, dx, R);
+            if (!sampleSegments(fi, dx, R, s2))
             {
-                rebound(f, n, max(d, scalar(0)));
-                f.cell() = celli;
-                label hit2 = -1;
-                if (sampler_.walk(f.position(), celli, hit2))
-                {
-                    f.cell() = celli;
-                    continue;
-                }
+                status_[fi] = status::waiting;
+                return;
             }
-            // deposit rule, or a rebound that did not bring it back
-            deposit(f);
-            keep[fi] = false;
-            ++nDeposited;
+            if (dispersion_->active())
+            {
+                dispersion_->correct(f, s2);
+            }
+            constraint_.constrain(s2);
+            finish(fi, s2, h);
         }
         else
         {
-            keep[fi] = false;
-            ++nEscaped;
+            finish(fi, s, h);
         }
     }
+}
 
-    nEscaped_ += returnReduce(nEscaped, sumOp<label>());
-    nDeposited_ += returnReduce(nDeposited, sumOp<label>());
 
-    label nSend = 0;
-    forAll(sendFibers, proci)
+void Foam::fiberCloud::round()
+{
+    // Stage 1: the current configuration of every waiting fiber
+    labelList waiting(status_.size());
+    label nWaiting = 0;
+    labelList offset(status_.size() + 1, 0);
+    forAll(status_, fi)
     {
-        nSend += sendFibers[proci].size();
-    }
-    nTransferred_ = returnReduce(nSend, sumOp<label>());
-
-    PstreamBuffers buf(Pstream::commsTypes::nonBlocking);
-    if (Pstream::parRun())
-    {
-        forAll(sendFibers, proci)
+        offset[fi + 1] = offset[fi];
+        if (status_[fi] == status::waiting)
         {
-            if (sendFibers[proci].size())
-            {
-                UOPstream os(proci, buf);
-                os << sendFibers[proci].size();
-                forAll(sendFibers[proci], k)
-                {
-                    os  << sendFaces[proci][k] << token::SPACE
-                        << fibers_[sendFibers[proci][k]];
-                }
-            }
+            waiting[nWaiting++] = fi;
+            offset[fi + 1] += fibers_[fi].nSegments();
         }
     }
-    labelList recvSizes;
-    if (Pstream::parRun())
-    {
-        buf.finishedSends(recvSizes);
-    }
+    waiting.setSize(nWaiting);
 
-    // Compact the kept fibers
-    PtrList<fiber> kept(fibers_.size());
-    label n = 0;
-    forAll(fibers_, fi)
-    {
-        if (keep[fi])
-        {
-            kept.set(n++, fibers_.set(fi, nullptr));
-        }
-    }
+    List<fluidSample> s(offset.last());
+    List<fluidSample> s2(offset.last());
+    DynamicList<fluidSampler::request> reqs;
+    DynamicList<remoteSegment> remote;
+    scalarList h(status_.size(), Zero);
 
-    if (Pstream::parRun())
+    // Gather, exchange, bring the answers into the fibers' frames
+    auto collect = [&](List<fluidSample>& out, const bool predicted)
     {
-        for (label proci = 0; proci < nProcs; ++proci)
+        reqs.clear();
+        remote.clear();
+        for (const label fi : waiting)
         {
-            if (!recvSizes[proci])
+            if (status_[fi] != status::waiting)
             {
                 continue;
             }
-            UIPstream is(proci, buf);
-            const label nRecv = readLabel(is);
-            kept.setSize(n + nRecv);
-            for (label k = 0; k < nRecv; ++k)
+            const fiber& f = fibers_[fi];
+            SubList<fluidSample> sf(out, f.nSegments(), offset[fi]);
+            vector dx(Zero);
+            tensor R(f.R());
+            if (predicted)
             {
-                const label patchFace = readLabel(is);
-                fiber* fPtr = new fiber(is);
+                integrator_->predict(f, h[fi], dx, R);
+            }
+            sampleSegments(fi, dx, R, sf, &reqs, &remote);
+        }
+        List<fluidSample> answers(reqs.size());
+        sampler_.exchange(reqs, answers);
+        forAll(remote, k)
+        {
+            fluidSampler::toStartFrame(remote[k].h, answers[k]);
+            out[offset[remote[k].fiber] + remote[k].segment] = answers[k];
+        }
+    };
 
-                // Continue the walk from the matching face
-                const label procPatchi = sampler_.processorPatch(proci);
-                label celli =
-                    mesh_.boundaryMesh()[procPatchi].faceCells()[patchFace];
-                label hitFace = -1;
-                if (!sampler_.walk(fPtr->position(), celli, hitFace))
-                {
-                    const label found = mesh_.findCell(fPtr->position());
-                    if (found >= 0)
-                    {
-                        celli = found;
-                    }
-                }
-                fPtr->cell() = celli;
-                fPtr->segmentCells() = celli;
-                kept.set(n++, fPtr);
+    collect(s, false);
+
+    // Stage 2: the configuration the integrator evaluates its forces in
+    for (const label fi : waiting)
+    {
+        SubList<fluidSample> sf(s, fibers_[fi].nSegments(), offset[fi]);
+        prepare(fi, sf, h[fi]);
+    }
+
+    if (integrator_->predicts())
+    {
+        collect(s2, true);
+    }
+
+    for (const label fi : waiting)
+    {
+        if (status_[fi] != status::waiting)
+        {
+            continue;
+        }
+        status_[fi] = status::running;
+        fiber& f = fibers_[fi];
+        if (integrator_->predicts())
+        {
+            SubList<fluidSample> sf(s2, f.nSegments(), offset[fi]);
+            if (dispersion_->active())
+            {
+                dispersion_->correct(f, sf);
+            }
+            constraint_.constrain(sf);
+            finish(fi, sf, h[fi]);
+        }
+        else
+        {
+            finish
+            (
+                fi,
+                SubList<fluidSample>(s, f.nSegments(), offset[fi]),
+                h[fi]
+            );
+        }
+    }
+}
+
+
+void Foam::fiberCloud::transfer()
+{
+    PstreamBuffers buf(Pstream::commsTypes::nonBlocking);
+    List<DynamicList<label>> send(Pstream::nProcs());
+    forAll(status_, fi)
+    {
+        if (status_[fi] == status::moving)
+        {
+            send[toProc_[fi]].append(fi);
+        }
+    }
+    forAll(send, proci)
+    {
+        if (send[proci].empty())
+        {
+            continue;
+        }
+        UOPstream os(proci, buf);
+        os << send[proci].size();
+        for (const label fi : send[proci])
+        {
+            os  << toPatch_[fi] << token::SPACE << toFace_[fi]
+                << token::SPACE << tLeft_[fi] << token::SPACE << nSub_[fi]
+                << token::SPACE << fibers_[fi];
+            status_[fi] = status::gone;
+            ++nSentStep_;
+        }
+    }
+    labelList recvSizes;
+    buf.finishedSends(recvSizes);
+
+    const labelList& procPatches = mesh_.globalData().processorPatches();
+    forAll(recvSizes, proci)
+    {
+        if (!recvSizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, buf);
+        const label n = readLabel(is);
+        for (label k = 0; k < n; ++k)
+        {
+            const label patch = readLabel(is);
+            const label face = readLabel(is);
+            const scalar tLeft = readScalar(is);
+            const label nSub = readLabel(is);
+            autoPtr<fiber> fPtr(new fiber(is));
+
+            const processorPolyPatch& pp = refCast<const processorPolyPatch>
+            (
+                mesh_.boundaryMesh()[procPatches[patch]]
+            );
+            // processorCyclic: into this side's frame
+            const vectorTensorTransform T(fiberTracker::receiving(pp, face));
+            fPtr->transform(T);
+
+            const label fi = fibers_.size();
+            fibers_.append(fPtr.ptr());
+            status_.append(tLeft > 0 ? status::running : status::done);
+            tLeft_.append(tLeft);
+            nSub_.append(nSub);
+            toProc_.append(-1);
+            toPatch_.append(-1);
+            toFace_.append(-1);
+
+            fiber& f = fibers_[fi];
+            const fiberTracker::hit c = tracker_.locate
+            (
+                f.position(),
+                f.location(),
+                pp.faceCells()[face]
+            );
+            if (c.crossed)
+            {
+                f.transform(c.T);
+            }
+            if (c.where == fiberTracker::stop::processor)
+            {
+                // On into a third processor's part
+                const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+                const label patchi = pbm.whichPatch(c.face);
+                const processorPolyPatch& next =
+                    refCast<const processorPolyPatch>(pbm[patchi]);
+                status_[fi] = status::moving;
+                toProc_[fi] = next.neighbProcNo();
+                toPatch_[fi] =
+                    mesh_.globalData().processorPatchNeighbours()[patchi];
+                toFace_[fi] = c.face - next.start();
+            }
+            else if
+            (
+                c.where == fiberTracker::stop::wall
+             || c.where == fiberTracker::stop::symmetry
+            )
+            {
+                centreAtWall(fi, c, c.where == fiberTracker::stop::symmetry);
+            }
+            else if (c.where == fiberTracker::stop::outlet)
+            {
+                status_[fi] = status::gone;
+                ++nEscapedStep_;
             }
         }
     }
+}
 
-    kept.setSize(n);
-    fibers_.transfer(kept);
+
+void Foam::fiberCloud::compact()
+{
+    label n = 0;
+    forAll(fibers_, fi)
+    {
+        if (status_[fi] != status::gone)
+        {
+            if (n != fi)
+            {
+                fibers_.set(n, fibers_.set(fi, nullptr));
+                status_[n] = status_[fi];
+                tLeft_[n] = tLeft_[fi];
+                nSub_[n] = nSub_[fi];
+                toProc_[n] = toProc_[fi];
+                toPatch_[n] = toPatch_[fi];
+                toFace_[n] = toFace_[fi];
+            }
+            ++n;
+        }
+    }
+    fibers_.setSize(n);
+    status_.setSize(n);
+    tLeft_.setSize(n);
+    nSub_.setSize(n);
+    toProc_.setSize(n);
+    toPatch_.setSize(n);
+    toFace_.setSize(n);
 }
 
 
@@ -417,7 +815,8 @@ void Foam::fiberCloud::rebound
 (
     fiber& f,
     const vector& n,
-    const scalar d
+    const scalar d,
+    const scalar e
 ) const
 {
     // Back inside the wall plane, with a margin of a thousandth of the
@@ -428,14 +827,19 @@ void Foam::fiberCloud::rebound
     const scalar vn = f.velocity() & n;
     if (vn > 0)
     {
-        f.setVelocity(f.velocity() - (1 + restitution_)*vn*n);
+        f.setVelocity(f.velocity() - (1 + e)*vn*n);
     }
 }
 
 
-void Foam::fiberCloud::deposit(const fiber& f)
+void Foam::fiberCloud::deposit(const label fi)
 {
-    deposits_.append(stateOf(f));
+    if (wallRule_ == wallRule::deposit)
+    {
+        deposits_.append(stateOf(fibers_[fi]));
+    }
+    status_[fi] = status::gone;
+    ++nDepositedStep_;
 }
 
 
@@ -467,7 +871,11 @@ Foam::fiberCloud::fiberCloud
     restitution_(dict.getOrDefault<scalar>("restitution", 1)),
     g_(g),
     shearStepFactor_(positiveOrDefault(dict, "shearStepFactor", 0.1)),
-    sampler_(mesh, checkedScheme(dict)),
+    maxCo_(positiveOrDefault(dict, "maxCo", 1)),
+    tracker_(mesh),
+    sampler_(mesh, tracker_, checkedScheme(dict)),
+    constraint_(mesh),
+    cellLength_(),
     nInjected_(0),
     nEscaped_(0),
     nDeposited_(0),
@@ -479,7 +887,10 @@ Foam::fiberCloud::fiberCloud
     nOutside_(0),
     nInertial_(0),
     nInertialSkipped_(0),
-    nSegmentSteps_(0)
+    nSegmentSteps_(0),
+    nEscapedStep_(0),
+    nDepositedStep_(0),
+    nSentStep_(0)
 {
     const word rule(dict.getOrDefault<word>("wallInteraction", "rebound"));
     if (!wallRuleNames.found(rule))
@@ -504,11 +915,27 @@ Foam::fiberCloud::fiberCloud
     }
     Info<< endl;
 
+    if (constraint_.active())
+    {
+        g_ = constraint_.constrain(g);
+        Info<< "    2-D case: fibers held in the plane (free directions "
+            << constraint_.freeDirections() << "), gravity " << g_ << endl;
+    }
+    Info<< "    Sub-steps: Eq. 22 with shearStepFactor " << shearStepFactor_
+        << ", at most maxCo " << maxCo_ << " cell lengths" << endl;
+    calcCellLength();
+
     const dictionary& injectionDict = dict.subDict("injection");
 
     PtrList<fiber> all;
     List<fiberInjection::origin> origins;
-    fiberInjection::read(injectionDict, all, origins);
+    fiberInjection::read
+    (
+        injectionDict,
+        all,
+        origins,
+        constraint_.freeDirections()
+    );
     nInjected_ = all.size();
 
     if (dict.getOrDefault<bool>("jefferyCorrection", false))
@@ -539,231 +966,68 @@ Foam::fiberCloud::fiberCloud
 void Foam::fiberCloud::evolve(const scalar dt)
 {
     const label nF = fibers_.size();
-
-    // Flattened segment lists
-    labelList offset(nF + 1, 0);
-    forAll(fibers_, fi)
-    {
-        offset[fi + 1] = offset[fi] + fibers_[fi].nSegments();
-    }
-    List<point> pts(offset.last());
-    labelList cells(offset.last());
-    labelList cells2(offset.last());
-    List<fluidSample> samples;
-    List<fluidSample> samples2;
-    scalarList dtStep(nF, Zero);
-    List<point> segPts;
-    labelList start(nF, -1);
-
-    // Time left per fiber in this step; done below tTol
-    scalarList tLeft(nF, dt);
-    const scalar tTol = 1e-9*dt;
-    boolList gone(nF, false);
-    label nDeposited = 0;
+    status_.setSize(nF);
+    status_ = (dt > 0 ? status::running : status::done);
+    tLeft_.setSize(nF);
+    tLeft_ = dt;
+    nSub_.setSize(nF);
+    nSub_ = 0;
+    toProc_.setSize(nF);
+    toProc_ = -1;
+    toPatch_.setSize(nF);
+    toPatch_ = -1;
+    toFace_.setSize(nF);
+    toFace_ = -1;
+    nEscapedStep_ = 0;
+    nDepositedStep_ = 0;
+    nSentStep_ = 0;
 
     sampler_.resetCounters();
     hydro_.resetCounters();
-    label nRounds = 0;
     dtSubMin_ = dt;
 
     while (true)
     {
-        // The segments of the fibers that still have time to go
-        label nPts = 0;
-        bool any = false;
         forAll(fibers_, fi)
         {
-            start[fi] = -1;
-            if (gone[fi] || tLeft[fi] <= tTol)
+            if (status_[fi] == status::running)
             {
-                continue;
-            }
-            any = true;
-            fiber& f = fibers_[fi];
-            f.segmentCentres(segPts);
-            const labelList& segCells = f.segmentCells();
-            start[fi] = nPts;
-            forAll(segPts, i)
-            {
-                pts[nPts] = segPts[i];
-                cells[nPts] = segCells[i] >= 0 ? segCells[i] : f.cell();
-                ++nPts;
+                runLocal(fi);
             }
         }
-
-        if (!returnReduce(any, orOp<bool>()))
+        if (!Pstream::parRun())
         {
             break;
         }
-        ++nRounds;
-
-        sampler_.sample(SubList<point>(pts, nPts), cells, samples);
-
-        // Per fiber: wall contact, step length (Eq. 22, 23)
-        forAll(fibers_, fi)
+        bool pending = false;
+        for (const status st : status_)
         {
-            dtStep[fi] = 0;
-            if (start[fi] < 0)
-            {
-                continue;
-            }
-            fiber& f = fibers_[fi];
-            const label n = f.nSegments();
-            SubList<fluidSample> s(samples, n, start[fi]);
-            labelList& segCells = f.segmentCells();
-            for (label i = 0; i < n; ++i)
-            {
-                segCells[i] = cells[start[fi] + i];
-            }
-
-            // Wall contact: the deepest segment beyond a wall
-            label iWall = -1;
-            forAll(s, i)
-            {
-                if
-                (
-                    s[i].beyondWall()
-                 && (iWall < 0 || s[i].dWall > s[iWall].dWall)
-                )
-                {
-                    iWall = i;
-                }
-            }
-            if (iWall >= 0)
-            {
-                if (wallRule_ == wallRule::deposit)
-                {
-                    deposit(f);
-                    gone[fi] = true;
-                    ++nDeposited;
-                    continue;
-                }
-                // Back inside, then the step goes on with these samples
-                // (a fiber pressed onto a wall slides along it)
-                rebound(f, s[iWall].nWall, s[iWall].dWall);
-            }
-
-            // Eq. 22: equal parts of the time left
-            scalar gammaDot = 0;
-            forAll(s, i)
-            {
-                gammaDot = max(gammaDot, s[i].shearRate());
-            }
-            const scalar rc = f.length()/f.minDiameter();
-            const scalar parts = tLeft[fi]*rc*gammaDot/shearStepFactor_;
-            if (parts > labelMax/2)
-            {
-                FatalErrorInFunction
-                    << "Fiber " << f.id() << " needs " << parts
-                    << " sub-steps over " << tLeft[fi] << " s (shear rate "
-                    << gammaDot << ")" << exit(FatalError);
-            }
-            // Round-off tolerant: a count that is an integer up to
-            // round-off (uniform shear) must not flip to the next one
-            const label nParts = max(1, label(std::ceil(parts*(1 - 1e-9))));
-            dtStep[fi] = tLeft[fi]/nParts;
-
-            // Eq. 23: not beyond the end of the fiber's eddy
-            if (dispersion_->active())
-            {
-                dtStep[fi] = min(dtStep[fi], dispersion_->correct(f, s));
-            }
+            pending = pending || st == status::waiting || st == status::moving;
         }
-
-        // Schemes that evaluate the forces in a predicted configuration:
-        // sample there (collective)
-        List<fluidSample>* stepSamples = &samples;
-        if (integrator_->predicts())
+        if (!returnReduce(pending, orOp<bool>()))
         {
-            label nPts2 = 0;
-            forAll(fibers_, fi)
-            {
-                if (dtStep[fi] <= 0)
-                {
-                    start[fi] = -1;
-                    continue;
-                }
-                integrator_->predictedCentres
-                (
-                    fibers_[fi], dtStep[fi], segPts
-                );
-                const label s0 = start[fi];
-                start[fi] = nPts2;
-                forAll(segPts, i)
-                {
-                    pts[nPts2] = segPts[i];
-                    cells2[nPts2] = cells[s0 + i];
-                    ++nPts2;
-                }
-            }
-            sampler_.sample(SubList<point>(pts, nPts2), cells2, samples2);
-            if (dispersion_->active())
-            {
-                forAll(fibers_, fi)
-                {
-                    if (start[fi] >= 0)
-                    {
-                        SubList<fluidSample> s2
-                        (
-                            samples2, fibers_[fi].nSegments(), start[fi]
-                        );
-                        dispersion_->correct(fibers_[fi], s2);
-                    }
-                }
-            }
-            stepSamples = &samples2;
+            break;
         }
-
-        // Advance
-        forAll(fibers_, fi)
-        {
-            if (dtStep[fi] <= 0 || start[fi] < 0)
-            {
-                continue;
-            }
-            fiber& f = fibers_[fi];
-            const SubList<fluidSample> s
-            (
-                *stepSamples, f.nSegments(), start[fi]
-            );
-            integrator_->advance(f, s, hydro_, g_, dtStep[fi]);
-            nSegmentSteps_ += f.nSegments();
-            dispersion_->elapse(f, dtStep[fi]);
-
-            tLeft[fi] -= dtStep[fi];
-            if (tLeft[fi] <= tTol)
-            {
-                tLeft[fi] = 0;
-            }
-            dtSubMin_ = min(dtSubMin_, dtStep[fi]);
-        }
+        round();
+        transfer();
     }
 
-    nSubMax_ = nRounds;
+    label nSubMax = 0;
+    for (const label n : nSub_)
+    {
+        nSubMax = max(nSubMax, n);
+    }
+    nSubMax_ = returnReduce(nSubMax, maxOp<label>());
     dtSubMin_ = returnReduce(dtSubMin_, minOp<scalar>());
     nRemote_ = returnReduce(sampler_.nRemote(), sumOp<label>());
     nOutside_ = returnReduce(sampler_.nOutside(), sumOp<label>());
     nInertial_ = returnReduce(hydro_.nInertial(), sumOp<label>());
     nInertialSkipped_ = returnReduce(hydro_.nSkipped(), sumOp<label>());
-    nDeposited_ += returnReduce(nDeposited, sumOp<label>());
+    nEscaped_ += returnReduce(nEscapedStep_, sumOp<label>());
+    nDeposited_ += returnReduce(nDepositedStep_, sumOp<label>());
+    nTransferred_ = returnReduce(nSentStep_, sumOp<label>());
 
-    // Remove the deposited fibers
-    if (gone.found(true))
-    {
-        PtrList<fiber> kept(nF);
-        label n = 0;
-        forAll(fibers_, fi)
-        {
-            if (!gone[fi])
-            {
-                kept.set(n++, fibers_.set(fi, nullptr));
-            }
-        }
-        kept.setSize(n);
-        fibers_.transfer(kept);
-    }
-
-    relocate();
+    compact();
 }
 
 

@@ -126,7 +126,8 @@ void Foam::fiberInjection::read
 (
     const dictionary& dict,
     PtrList<fiber>& fibers,
-    List<origin>& origins
+    List<origin>& origins,
+    const vector& freeDirections
 )
 {
     DynamicList<origin> orig;
@@ -227,11 +228,15 @@ void Foam::fiberInjection::read
                     // Uniform on the sphere: normalised Gaussian vector
                     do
                     {
-                        p = vector
+                        p = cmptMultiply
                         (
-                            rnd.GaussNormal<scalar>(),
-                            rnd.GaussNormal<scalar>(),
-                            rnd.GaussNormal<scalar>()
+                            freeDirections,
+                            vector
+                            (
+                                rnd.GaussNormal<scalar>(),
+                                rnd.GaussNormal<scalar>(),
+                                rnd.GaussNormal<scalar>()
+                            )
                         );
                     } while (mag(p) < 1e-6);
                     p /= mag(p);

@@ -193,7 +193,7 @@ void Foam::functionObjects::fiberTracking::advance(const scalar dt)
     if (cloud_->nOutside())
     {
         Log << ", segment samples outside the mesh " << cloud_->nOutside()
-            << " (fluid data of the last cell reached)";
+            << " (data on the outlet face of a fiber straddling it)";
     }
     Log << endl;
 }

@@ -12,199 +12,109 @@ License
 
 #include "fluidSampler.H"
 #include "processorPolyPatch.H"
-#include "processorCyclicPolyPatch.H"
 #include "PstreamBuffers.H"
-#include "wallPolyPatch.H"
-#include "interpolationCellPoint.H"
+#include "globalMeshData.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+template<class Type>
+const interpolationCellPoint<Type>* cellPointOf
+(
+    const autoPtr<interpolation<Type>>& ip
+)
+{
+    return ip.valid() ? isA<interpolationCellPoint<Type>>(ip()) : nullptr;
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fluidSampler::fluidSampler(const fvMesh& mesh, const word& scheme)
+Foam::fluidSampler::fluidSampler
+(
+    const fvMesh& mesh,
+    const fiberTracker& tracker,
+    const word& scheme
+)
 :
     mesh_(mesh),
+    tracker_(tracker),
     scheme_(scheme),
-    procPatch_(),
     UInterp_(),
     gradUInterp_(),
     kInterp_(),
     epsilonInterp_(),
+    UCellPoint_(nullptr),
+    gradUCellPoint_(nullptr),
+    kCellPoint_(nullptr),
+    epsilonCellPoint_(nullptr),
     mu_(),
-    cellPoint_(false),
     nRemote_(0),
     nOutside_(0)
 {
-    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    forAll(pbm, patchi)
-    {
-        const polyPatch& pp = pbm[patchi];
-        if
-        (
-            isA<processorPolyPatch>(pp)
-         && !isA<processorCyclicPolyPatch>(pp)
-        )
-        {
-            procPatch_.insert
-            (
-                refCast<const processorPolyPatch>(pp).neighbProcNo(),
-                patchi
-            );
-        }
-    }
+    // Processor patch addressing is built collectively
+    (void)mesh_.globalData();
 }
 
 
-// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::fluidSample Foam::fluidSampler::sampleLocal
+void Foam::fluidSampler::interpolate
 (
-    const point& p,
-    const label celli,
-    const bool inside,
-    const label hitFace
+    const trackedPoint& tp,
+    fluidSample& s
 ) const
 {
-    fluidSample s;
-    s.mu = mu_[celli];
+    const tetIndices tet(tp.tet());
+    const barycentric& w = tp.coordinates;
+    s.mu = mu_[tp.celli];
 
-    if (cellPoint_)
+    if (UCellPoint_)
     {
-        const cellPointWeight cpw(mesh_, p, celli);
-        s.U = static_cast<const interpolationCellPoint<vector>&>
-            (UInterp_()).interpolate(cpw);
-        s.G = static_cast<const interpolationCellPoint<tensor>&>
-            (gradUInterp_()).interpolate(cpw).T();
-        if (kInterp_.valid())
+        s.U = UCellPoint_->interpolationCellPoint<vector>::interpolate(w, tet);
+        // fvc::grad(U) holds du_j/dx_i; G_ij = du_i/dx_j
+        s.G = gradUCellPoint_->interpolationCellPoint<tensor>::interpolate
+        (
+            w,
+            tet
+        ).T();
+        if (kCellPoint_)
         {
-            s.k = static_cast<const interpolationCellPoint<scalar>&>
-                (kInterp_()).interpolate(cpw);
-            s.epsilon = static_cast<const interpolationCellPoint<scalar>&>
-                (epsilonInterp_()).interpolate(cpw);
+            s.k = kCellPoint_->interpolationCellPoint<scalar>::interpolate
+            (
+                w,
+                tet
+            );
+            s.epsilon =
+                epsilonCellPoint_->interpolationCellPoint<scalar>::interpolate
+                (
+                    w,
+                    tet
+                );
         }
     }
     else
     {
-        s.U = UInterp_->interpolate(p, celli);
-        // fvc::grad(U) holds du_j/dx_i; G_ij = du_i/dx_j
-        s.G = gradUInterp_->interpolate(p, celli).T();
+        s.U = UInterp_->interpolate(w, tet);
+        s.G = gradUInterp_->interpolate(w, tet).T();
         if (kInterp_.valid())
         {
-            s.k = kInterp_->interpolate(p, celli);
-            s.epsilon = epsilonInterp_->interpolate(p, celli);
+            s.k = kInterp_->interpolate(w, tet);
+            s.epsilon = epsilonInterp_->interpolate(w, tet);
         }
     }
     s.k = max(s.k, scalar(0));
     s.epsilon = max(s.epsilon, scalar(0));
-    s.inside = inside;
-    if (!inside)
-    {
-        ++nOutside_;
-        if
-        (
-            hitFace >= 0
-         && isA<wallPolyPatch>
-            (
-                mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(hitFace)]
-            )
-        )
-        {
-            const vector& Sf = mesh_.faceAreas()[hitFace];
-            s.nWall = Sf/mag(Sf);
-            s.dWall =
-                max((p - mesh_.faceCentres()[hitFace]) & s.nWall, scalar(0));
-        }
-    }
-    return s;
-}
-
-
-void Foam::fluidSampler::exchange
-(
-    const labelList& remoteProc,
-    const labelList& remoteFace,
-    const UList<point>& pts,
-    const labelList& remoteIndex,
-    List<fluidSample>& out
-) const
-{
-    // Requests: per destination the points and patch faces
-    List<DynamicList<point>> sendPts(Pstream::nProcs());
-    List<DynamicList<label>> sendFaces(Pstream::nProcs());
-    List<DynamicList<label>> sendIndex(Pstream::nProcs());
-
-    forAll(remoteIndex, k)
-    {
-        const label proci = remoteProc[k];
-        sendPts[proci].append(pts[remoteIndex[k]]);
-        sendFaces[proci].append(remoteFace[k]);
-        sendIndex[proci].append(remoteIndex[k]);
-    }
-
-    PstreamBuffers req(Pstream::commsTypes::nonBlocking);
-    forAll(sendPts, proci)
-    {
-        if (sendPts[proci].size())
-        {
-            UOPstream os(proci, req);
-            os << pointField(sendPts[proci]) << labelList(sendFaces[proci]);
-        }
-    }
-    labelList recvSizes;
-    req.finishedSends(recvSizes);
-
-    // Answer the neighbours' requests
-    PstreamBuffers ans(Pstream::commsTypes::nonBlocking);
-    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
-    {
-        if (!recvSizes[proci])
-        {
-            continue;
-        }
-        UIPstream is(proci, req);
-        const pointField rp(is);
-        const labelList rf(is);
-
-        List<fluidSample> result(rp.size());
-        const label patchi = procPatch_[proci];
-        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
-
-        forAll(rp, k)
-        {
-            label celli = pp.faceCells()[rf[k]];
-            label hit = -1;
-            if (walk(rp[k], celli, hit))
-            {
-                result[k] = sampleLocal(rp[k], celli, true);
-                continue;
-            }
-            const label found = mesh_.findCell(rp[k]);
-            if (found >= 0)
-            {
-                result[k] = sampleLocal(rp[k], found, true);
-            }
-            else
-            {
-                result[k] = sampleLocal(rp[k], celli, false, hit);
-            }
-        }
-
-        UOPstream os(proci, ans);
-        os << result;
-    }
-    ans.finishedSends();
-
-    forAll(sendIndex, proci)
-    {
-        if (sendIndex[proci].empty())
-        {
-            continue;
-        }
-        UIPstream is(proci, ans);
-        const List<fluidSample> result(is);
-        forAll(result, k)
-        {
-            out[sendIndex[proci][k]] = result[k];
-        }
-    }
+    s.inside = true;
+    s.nWall = Zero;
+    s.dWall = 0;
+    s.mirror = false;
 }
 
 
@@ -233,156 +143,176 @@ void Foam::fluidSampler::update
         epsilonInterp_.clear();
     }
 
-    cellPoint_ =
-        isA<interpolationCellPoint<vector>>(UInterp_())
-     && isA<interpolationCellPoint<tensor>>(gradUInterp_())
-     && (!kInterp_.valid() || isA<interpolationCellPoint<scalar>>(kInterp_()))
-     && (
-            !epsilonInterp_.valid()
-         || isA<interpolationCellPoint<scalar>>(epsilonInterp_())
-        );
+    UCellPoint_ = cellPointOf(UInterp_);
+    gradUCellPoint_ = cellPointOf(gradUInterp_);
+    kCellPoint_ = cellPointOf(kInterp_);
+    epsilonCellPoint_ = cellPointOf(epsilonInterp_);
+    const bool allCellPoint =
+        UCellPoint_ && gradUCellPoint_
+     && (!kInterp_.valid() || (kCellPoint_ && epsilonCellPoint_));
+    if (!allCellPoint)
+    {
+        UCellPoint_ = nullptr;
+    }
 }
 
 
-bool Foam::fluidSampler::walk
+bool Foam::fluidSampler::sample
 (
-    const point& p,
-    label& celli,
-    label& hitFace
+    const trackedPoint& tp,
+    const fiberTracker::hit& h,
+    fluidSample& s,
+    request& req
 ) const
 {
-    const cellList& cells = mesh_.cells();
-    const vectorField& Cf = mesh_.faceCentres();
-    const vectorField& Sf = mesh_.faceAreas();
-    const labelList& own = mesh_.faceOwner();
-    const labelList& nei = mesh_.faceNeighbour();
+    typedef fiberTracker::stop stop;
 
-    hitFace = -1;
-    label c = celli;
-    const label maxSteps = 100 + mesh_.nCells();
-
-    for (label step = 0; step < maxSteps; ++step)
+    if (h.where == stop::processor)
     {
-        scalar dMax = 0;
-        label fMax = -1;
-        for (const label facei : cells[c])
-        {
-            scalar d = ((p - Cf[facei]) & Sf[facei])/mag(Sf[facei]);
-            if (own[facei] != c)
-            {
-                d = -d;
-            }
-            if (d > dMax)
-            {
-                dMax = d;
-                fMax = facei;
-            }
-        }
-
-        if (fMax < 0)
-        {
-            celli = c;
-            return true;
-        }
-
-        if (!mesh_.isInternalFace(fMax))
-        {
-            celli = c;
-            hitFace = fMax;
-            return false;
-        }
-
-        c = (own[fMax] == c ? nei[fMax] : own[fMax]);
-    }
-
-    celli = c;
-    return false;
-}
-
-
-bool Foam::fluidSampler::processorFace
-(
-    const label hitFace,
-    label& neighbProc,
-    label& patchFace
-) const
-{
-    if (hitFace < 0)
-    {
+        const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+        const label patchi = pbm.whichPatch(h.face);
+        const processorPolyPatch& pp =
+            refCast<const processorPolyPatch>(pbm[patchi]);
+        req.proc = pp.neighbProcNo();
+        req.patch = mesh_.globalData().processorPatchNeighbours()[patchi];
+        req.face = h.face - pp.start();
+        req.p = tracker_.position(tp) + h.left;
         return false;
     }
-    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    const label patchi = pbm.whichPatch(hitFace);
-    const polyPatch& pp = pbm[patchi];
-    if (!isA<processorPolyPatch>(pp) || isA<processorCyclicPolyPatch>(pp))
+
+    interpolate(tp, s);
+
+    if (h.where == stop::wall || h.where == stop::symmetry)
     {
-        return false;
+        const vector& Sf = mesh_.faceAreas()[h.face];
+        s.inside = false;
+        s.nWall = Sf/mag(Sf);
+        s.dWall = max(h.left & s.nWall, scalar(0));
+        s.mirror = (h.where == stop::symmetry);
     }
-    neighbProc = refCast<const processorPolyPatch>(pp).neighbProcNo();
-    patchFace = hitFace - pp.start();
+    else if (h.where == stop::outlet)
+    {
+        s.inside = false;
+        ++nOutside_;
+    }
+
+    toStartFrame(h, s);
     return true;
 }
 
 
-void Foam::fluidSampler::sample
+void Foam::fluidSampler::toStartFrame
 (
-    const UList<point>& pts,
-    labelList& cells,
-    List<fluidSample>& out
+    const fiberTracker::hit& h,
+    fluidSample& s
+)
+{
+    if (h.crossed && h.T.hasR())
+    {
+        const tensor& R = h.T.R();
+        s.U = R.T() & s.U;
+        s.G = R.T() & s.G & R;
+        s.nWall = R.T() & s.nWall;
+    }
+}
+
+
+void Foam::fluidSampler::exchange
+(
+    const UList<request>& reqs,
+    UList<fluidSample>& answers
 ) const
 {
-    out.setSize(pts.size());
+    const label nProcs = Pstream::nProcs();
 
-    DynamicList<label> remoteProc;
-    DynamicList<label> remoteFace;
-    DynamicList<label> remoteIndex;
-
-    forAll(pts, i)
+    // Requests per neighbour, in the order of reqs
+    List<DynamicList<label>> index(nProcs);
+    forAll(reqs, k)
     {
-        const point& p = pts[i];
-        label celli = cells[i];
-        label hitFace = -1;
-
-        if (celli >= 0 && walk(p, celli, hitFace))
-        {
-            cells[i] = celli;
-            out[i] = sampleLocal(p, celli, true);
-            continue;
-        }
-
-        label proci, facei;
-        if (processorFace(hitFace, proci, facei))
-        {
-            remoteProc.append(proci);
-            remoteFace.append(facei);
-            remoteIndex.append(i);
-            // keep the last local cell as the seed of the next walk
-            cells[i] = celli;
-            continue;
-        }
-
-        // Left through a physical boundary, walk failed or no seed
-        const label found = mesh_.findCell(p);
-        if (found >= 0)
-        {
-            cells[i] = found;
-            out[i] = sampleLocal(p, found, true);
-        }
-        else if (celli >= 0)
-        {
-            cells[i] = celli;
-            out[i] = sampleLocal(p, celli, false, hitFace);
-        }
-        else
-        {
-            out[i] = fluidSample();
-        }
+        index[reqs[k].proc].append(k);
     }
 
-    if (Pstream::parRun())
+    PstreamBuffers ask(Pstream::commsTypes::nonBlocking);
+    forAll(index, proci)
     {
-        nRemote_ += remoteIndex.size();
-        exchange(remoteProc, remoteFace, pts, remoteIndex, out);
+        if (index[proci].size())
+        {
+            UOPstream os(proci, ask);
+            os << index[proci].size();
+            for (const label k : index[proci])
+            {
+                os  << reqs[k].patch << token::SPACE << reqs[k].face
+                    << token::SPACE << reqs[k].p;
+            }
+        }
+    }
+    labelList recvSizes;
+    ask.finishedSends(recvSizes);
+
+    // Answer: locate the point from the cell behind the patch face, in
+    // this processor's frame (processorCyclic: transformed), and send the
+    // data back in the asker's frame
+    const labelList& procPatches = mesh_.globalData().processorPatches();
+    PstreamBuffers answer(Pstream::commsTypes::nonBlocking);
+    for (label proci = 0; proci < nProcs; ++proci)
+    {
+        if (!recvSizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, ask);
+        const label n = readLabel(is);
+        List<fluidSample> result(n);
+        request dummy;
+        for (label k = 0; k < n; ++k)
+        {
+            label patch, face;
+            point p;
+            is >> patch >> face >> p;
+            const processorPolyPatch& pp = refCast<const processorPolyPatch>
+            (
+                mesh_.boundaryMesh()[procPatches[patch]]
+            );
+            const vectorTensorTransform T
+            (
+                fiberTracker::receiving(pp, face)
+            );
+            trackedPoint tp;
+            fiberTracker::hit h =
+                tracker_.locate
+                (
+                    T.transformPosition(p),
+                    tp,
+                    pp.faceCells()[face]
+                );
+            if (h.where == fiberTracker::stop::processor)
+            {
+                // In a third processor's part: the data at the boundary
+                h.where = fiberTracker::stop::outlet;
+            }
+            sample(tp, h, result[k], dummy);
+            fiberTracker::hit back{h.where, -1, Zero, true, T};
+            toStartFrame(back, result[k]);
+        }
+        nRemote_ += n;
+
+        UOPstream os(proci, answer);
+        os << result;
+    }
+    answer.finishedSends();
+
+    forAll(index, proci)
+    {
+        if (index[proci].empty())
+        {
+            continue;
+        }
+        UIPstream is(proci, answer);
+        const List<fluidSample> result(is);
+        forAll(result, k)
+        {
+            answers[index[proci][k]] = result[k];
+        }
     }
 }
 

@@ -1,0 +1,276 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fiberTracker.H"
+#include "particle.H"
+#include "cyclicPolyPatch.H"
+#include "cyclicAMIPolyPatch.H"
+#include "processorPolyPatch.H"
+#include "wallPolyPatch.H"
+#include "symmetryPolyPatch.H"
+#include "symmetryPlanePolyPatch.H"
+#include "emptyPolyPatch.H"
+#include "wedgePolyPatch.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
+:
+    mesh_(mesh),
+    kind_(mesh.boundaryMesh().size(), patchKind::outlet)
+{
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    forAll(pbm, patchi)
+    {
+        const polyPatch& pp = pbm[patchi];
+        patchKind& k = kind_[patchi];
+        if (isA<processorPolyPatch>(pp))
+        {
+            k = patchKind::processor;
+        }
+        else if (isA<cyclicAMIPolyPatch>(pp))
+        {
+            k = patchKind::cyclicAMI;
+        }
+        else if (isA<cyclicPolyPatch>(pp))
+        {
+            k = patchKind::cyclic;
+        }
+        else if (isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp))
+        {
+            k = patchKind::inside;
+        }
+        else if
+        (
+            isA<symmetryPolyPatch>(pp) || isA<symmetryPlanePolyPatch>(pp)
+        )
+        {
+            k = patchKind::symmetry;
+        }
+        else if (isA<wallPolyPatch>(pp))
+        {
+            k = patchKind::wall;
+        }
+    }
+
+    // The tet base points are built collectively: on every processor now,
+    // not on the first that happens to track
+    (void)mesh_.tetBasePtIs();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::fiberTracker::cross
+(
+    trackedPoint& tp,
+    const label facei,
+    vector& d,
+    vectorTensorTransform& T
+) const
+{
+    const polyPatch& pp =
+        mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(facei)];
+
+    if (isA<cyclicAMIPolyPatch>(pp))
+    {
+        const cyclicAMIPolyPatch& cpp = refCast<const cyclicAMIPolyPatch>(pp);
+        const cyclicAMIPolyPatch& rcv = cpp.neighbPatch();
+
+        point pos(position(tp));
+        const label rf = cpp.pointFace(facei - cpp.start(), d, pos);
+        if (rf < 0)
+        {
+            return false;
+        }
+        const vectorTensorTransform Tf(receiving(rcv, rf));
+        if (Tf.hasR())
+        {
+            d = Tf.R() & d;
+        }
+        // From the receiving cell's centre to the mapped point, then on
+        atCellCentre(mesh_.faceOwner()[rcv.start() + rf], tp);
+        d += pos - position(tp);
+        T = Tf & T;
+        return true;
+    }
+
+    const cyclicPolyPatch& cpp = refCast<const cyclicPolyPatch>(pp);
+    const cyclicPolyPatch& rcv = cpp.neighbPatch();
+    const label local = facei - cpp.start();
+    const label newFace = rcv.start() + local;
+
+    // Same point of the matching face: the triangle seen from the other
+    // side has its two points in the reverse order
+    tp.celli = mesh_.faceOwner()[newFace];
+    tp.tetFacei = newFace;
+    tp.tetPti = mesh_.faces()[newFace].size() - 1 - tp.tetPti;
+    std::swap(tp.coordinates.c(), tp.coordinates.d());
+
+    const vectorTensorTransform Tf(receiving(rcv, local));
+    if (Tf.hasR())
+    {
+        d = Tf.R() & d;
+    }
+    T = Tf & T;
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::vectorTensorTransform Foam::fiberTracker::receiving
+(
+    const coupledPolyPatch& pp,
+    const label patchFace
+)
+{
+    point o(Zero);
+    pp.transformPosition(o, patchFace);
+    tensor Rt(Zero);
+    for (direction j = 0; j < vector::nComponents; ++j)
+    {
+        point e(Zero);
+        e[j] = 1;
+        pp.transformPosition(e, patchFace);
+        Rt.row(j, e - o);
+    }
+    const tensor R(Rt.T());
+    if (mag(R - tensor::I) < 1e-12)
+    {
+        return vectorTensorTransform(o);
+    }
+    return vectorTensorTransform(o, R, true);
+}
+
+
+Foam::point Foam::fiberTracker::position(const trackedPoint& tp) const
+{
+    particle p(mesh_, tp.coordinates, tp.celli, tp.tetFacei, tp.tetPti);
+    p.stepFraction() = 1;
+    return p.position();
+}
+
+
+void Foam::fiberTracker::atCellCentre
+(
+    const label celli,
+    trackedPoint& tp
+) const
+{
+    // Just off the centre, in the first tetrahedron of the first face
+    tp.coordinates = barycentric(1 - 3*SMALL, SMALL, SMALL, SMALL);
+    tp.celli = celli;
+    tp.tetFacei = mesh_.cells()[celli][0];
+    tp.tetPti = 1;
+}
+
+
+Foam::fiberTracker::hit Foam::fiberTracker::track
+(
+    trackedPoint& tp,
+    const vector& d
+) const
+{
+    hit h{stop::none, -1, Zero, false, vectorTensorTransform::I};
+
+    // particle counts its constructions in a label
+    if (particle::particleCount_ > labelMax/2)
+    {
+        particle::particleCount_ = 0;
+    }
+
+    vector disp(d);
+    label onFace = -1;
+    for (label n = 0; n <= maxCrossings; ++n)
+    {
+        particle p(mesh_, tp.coordinates, tp.celli, tp.tetFacei, tp.tetPti);
+        p.stepFraction() = 1;
+        p.face() = onFace;
+        const scalar f = p.track(disp, 0);
+
+        tp.coordinates = p.coordinates();
+        tp.celli = p.cell();
+        tp.tetFacei = p.tetFace();
+        tp.tetPti = p.tetPt();
+
+        if (!p.onBoundaryFace() || f <= 0)
+        {
+            return h;
+        }
+
+        const label facei = p.face();
+        disp *= f;
+        const patchKind k = kind_[mesh_.boundaryMesh().whichPatch(facei)];
+        switch (k)
+        {
+            case patchKind::cyclic:
+            case patchKind::cyclicAMI:
+            {
+                if (!cross(tp, facei, disp, h.T))
+                {
+                    h.where = stop::outlet;
+                    h.face = facei;
+                    h.left = disp;
+                    return h;
+                }
+                h.crossed = true;
+                onFace = (k == patchKind::cyclic ? tp.tetFacei : -1);
+                break;
+            }
+            case patchKind::inside:
+            {
+                return h;
+            }
+            default:
+            {
+                h.where =
+                    k == patchKind::wall ? stop::wall
+                  : k == patchKind::symmetry ? stop::symmetry
+                  : k == patchKind::processor ? stop::processor
+                  : stop::outlet;
+                h.face = facei;
+                h.left = disp;
+                return h;
+            }
+        }
+    }
+
+    FatalErrorInFunction
+        << "A displacement " << d << " crossed periodic patches more than "
+        << maxCrossings << " times" << exit(FatalError);
+    return h;
+}
+
+
+Foam::fiberTracker::hit Foam::fiberTracker::locate
+(
+    const point& p,
+    trackedPoint& tp,
+    label seed
+) const
+{
+    if (seed < 0)
+    {
+        seed = mesh_.findCell(p);
+        if (seed < 0)
+        {
+            tp = trackedPoint();
+            return hit{stop::outlet, -1, Zero, false, vectorTensorTransform::I};
+        }
+    }
+    atCellCentre(seed, tp);
+    return track(tp, p - position(tp));
+}
+
+
+// ************************************************************************* //
