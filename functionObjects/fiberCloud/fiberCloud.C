@@ -174,7 +174,6 @@ void Foam::fiberCloud::distribute
 
     // Owner: the lowest processor whose mesh holds the centre
     labelList owner(all.size(), nProcs);
-    labelList centreCell(all.size(), -1);
 
     // Segments found somewhere: flattened, per fiber offset
     labelList offset(all.size() + 1, 0);
@@ -184,20 +183,43 @@ void Foam::fiberCloud::distribute
     }
     labelList segFound(offset.last(), 0);
 
-    List<point> pts;
+    // Centres by the cell tree; segments by tracks from the centre, the
+    // cell tree only for those a track does not reach (another
+    // processor's part, or around a corner)
+    List<trackedPoint> centre(all.size());
     forAll(all, fi)
     {
         constraint_.constrain(all[fi]);
-        const label c = mesh_.findCell(all[fi].position());
-        if (c >= 0)
+        const fiber& f = all[fi];
+        const label c = mesh_.findCell(f.position());
+        if (c < 0)
         {
-            owner[fi] = myProc;
-            centreCell[fi] = c;
+            continue;
         }
+        owner[fi] = myProc;
+        tracker_.locate(f.position(), centre[fi], c);
+        const tensor R(f.R());
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            trackedPoint tp(centre[fi]);
+            const fiberTracker::hit h =
+                tracker_.track(tp, f.segmentOffset(R, i));
+            if (h.where == fiberTracker::stop::none)
+            {
+                segFound[offset[fi] + i] = 1;
+            }
+        }
+    }
+    Pstream::listCombineGather(segFound, maxEqOp<label>());
+    Pstream::listCombineScatter(segFound);
+
+    List<point> pts;
+    forAll(all, fi)
+    {
         all[fi].segmentCentres(pts);
         forAll(pts, i)
         {
-            if (mesh_.findCell(pts[i]) >= 0)
+            if (!segFound[offset[fi] + i] && mesh_.findCell(pts[i]) >= 0)
             {
                 segFound[offset[fi] + i] = 1;
             }
@@ -262,12 +284,7 @@ void Foam::fiberCloud::distribute
         if (owner[fi] == myProc)
         {
             fiber* fPtr = all.set(fi, nullptr).ptr();
-            tracker_.locate
-            (
-                fPtr->position(),
-                fPtr->location(),
-                centreCell[fi]
-            );
+            fPtr->location() = centre[fi];
             fibers_.set(nMine++, fPtr);
         }
     }
@@ -324,13 +341,13 @@ bool Foam::fiberCloud::sampleSegments
 {
     const fiber& f = fibers_[fi];
     const trackedPoint& centre = f.location();
-    const point xc(tracker_.position(centre));
     fluidSampler::request req;
     bool allLocal = true;
 
     for (label i = 0; i < f.nSegments(); ++i)
     {
-        const vector d(f.position() + dx + f.segmentOffset(R, i) - xc);
+        // From the centre's location (at f.position() up to round-off)
+        const vector d(dx + f.segmentOffset(R, i));
         trackedPoint tp(centre);
         const fiberTracker::hit h =
             magSqr(d) > 0
@@ -518,8 +535,12 @@ void Foam::fiberCloud::centreAtWall
     const point onWall(tracker_.position(f.location()));
     rebound(f, n, max(c.left & n, scalar(0)), mirror ? 1 : restitution_);
     const fiberTracker::hit back =
-        tracker_.track(f.location(), f.position() - onWall);
-    if (back.where != fiberTracker::stop::none || back.crossed)
+        tracker_.track(f.location(), f.position() - onWall, c.face);
+    if (back.crossed)
+    {
+        f.transform(back.T);
+    }
+    if (back.where != fiberTracker::stop::none)
     {
         // A rebound that did not bring it back (a corner): deposited
         deposit(fi);

@@ -100,7 +100,7 @@ bool Foam::fiberTracker::cross
         // From the receiving cell's centre to the mapped point, then on
         atCellCentre(mesh_.faceOwner()[rcv.start() + rf], tp);
         d += pos - position(tp);
-        T = Tf & T;
+        T = after(Tf, T);
         return true;
     }
 
@@ -121,7 +121,7 @@ bool Foam::fiberTracker::cross
     {
         d = Tf.R() & d;
     }
-    T = Tf & T;
+    T = after(Tf, T);
     return true;
 }
 
@@ -153,6 +153,25 @@ Foam::vectorTensorTransform Foam::fiberTracker::receiving
 }
 
 
+Foam::vectorTensorTransform Foam::fiberTracker::after
+(
+    const vectorTensorTransform& a,
+    const vectorTensorTransform& b
+)
+{
+    if (!a.hasR())
+    {
+        return vectorTensorTransform(a.t() + b.t(), b.R(), b.hasR());
+    }
+    return vectorTensorTransform
+    (
+        a.t() + (a.R() & b.t()),
+        a.R() & b.R(),
+        true
+    );
+}
+
+
 Foam::point Foam::fiberTracker::position(const trackedPoint& tp) const
 {
     particle p(mesh_, tp.coordinates, tp.celli, tp.tetFacei, tp.tetPti);
@@ -178,7 +197,8 @@ void Foam::fiberTracker::atCellCentre
 Foam::fiberTracker::hit Foam::fiberTracker::track
 (
     trackedPoint& tp,
-    const vector& d
+    const vector& d,
+    const label startFace
 ) const
 {
     hit h{stop::none, -1, Zero, false, vectorTensorTransform::I};
@@ -190,7 +210,7 @@ Foam::fiberTracker::hit Foam::fiberTracker::track
     }
 
     vector disp(d);
-    label onFace = -1;
+    label onFace = startFace;
     for (label n = 0; n <= maxCrossings; ++n)
     {
         particle p(mesh_, tp.coordinates, tp.celli, tp.tetFacei, tp.tetPti);

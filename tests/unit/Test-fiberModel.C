@@ -27,6 +27,7 @@ Description
 #include "fiberIntegrator.H"
 #include "fiberDispersion.H"
 #include "GosmanIoannides.H"
+#include "fiberTracker.H"
 #include "mathematicalConstants.H"
 #include "IOstreams.H"
 
@@ -1336,6 +1337,77 @@ void testExtremes()
 
 // * * * * * * * * * * * * * * * * * Main  * * * * * * * * * * * * * * * * //
 
+// Periodic crossing: fiber::transform moves the whole rigid state with the
+// patch transform x' = R x + t (rotational cyclic: 90 degrees about an axis
+// through c).  Reference: the transform applied to each segment centre, to
+// the velocity, angular velocity and orientation separately.
+void testPeriodicTransform()
+{
+    fiber f
+    (
+        fiber::straight(0, point(0.3, -0.2, 0.1), vector(1, 2, 3), 5, 0.1,
+            0.01, 1000)
+    );
+    f.setVelocity(vector(0.5, -1, 2));
+    f.setOmega(vector(-3, 1, 7));
+
+    const point c(1, 2, 0);
+    const tensor R(0, -1, 0, 1, 0, 0, 0, 0, 1);
+    const vectorTensorTransform T((c - (R & c)), R, true);
+
+    List<point> before, after;
+    f.segmentCentres(before);
+    const vector v0(f.velocity()), w0(f.omega()), p0(f.orientation());
+    f.transform(T);
+    f.segmentCentres(after);
+
+    scalar err = 0;
+    forAll(before, i)
+    {
+        err = max(err, mag(after[i] - T.transformPosition(before[i])));
+    }
+    err = max(err, mag(f.velocity() - (R & v0)));
+    err = max(err, mag(f.omega() - (R & w0)));
+    err = max(err, mag(f.orientation() - (R & p0)));
+    check("periodicTransform.rotational", err < 1e-12, fmt(err, 0, err));
+
+    // Translational crossing and back: the state returns exactly
+    const vectorTensorTransform S(vector(-0.1, 0, 0));
+    f.transform(S);
+    f.transform(vectorTensorTransform(-S.t()));
+    // x = R^T (x' - t)
+    f.transform(vectorTensorTransform(-(R.T() & T.t()), R.T(), true));
+    f.segmentCentres(after);
+    scalar back = 0;
+    forAll(before, i)
+    {
+        back = max(back, mag(after[i] - before[i]));
+    }
+    back = max(back, mag(f.velocity() - v0) + mag(f.omega() - w0));
+    check("periodicTransform.roundTrip", back < 1e-12, fmt(back, 0, back));
+
+    // Two crossings (rotations about different centres, then a shift):
+    // the accumulated transform equals applying them in turn
+    const point c2(-0.5, 0, 3);
+    const tensor R2(1, 0, 0, 0, 0, -1, 0, 1, 0);
+    const vectorTensorTransform T2((c2 - (R2 & c2)), R2, true);
+    const vectorTensorTransform all
+    (
+        fiberTracker::after(S, fiberTracker::after(T2, T))
+    );
+    scalar comp = 0;
+    for (const point& x : before)
+    {
+        const point ref
+        (
+            S.transformPosition(T2.transformPosition(T.transformPosition(x)))
+        );
+        comp = max(comp, mag(all.transformPosition(x) - ref));
+    }
+    check("periodicTransform.composition", comp < 1e-12, fmt(comp, 0, comp));
+}
+
+
 int main()
 {
     FatalError.throwExceptions();
@@ -1356,6 +1428,7 @@ int main()
         testOrder();
         testExtremes();
         testJefferyAndRigidity();
+        testPeriodicTransform();
     }
     catch (const Foam::error& err)
     {
