@@ -774,6 +774,7 @@ void Foam::fiberCloud::transfer()
             if (c.where == fiberTracker::stop::processor)
             {
                 // On into a third processor's part
+                ++nOnwardStep_;
                 const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
                 const label patchi = pbm.whichPatch(c.face);
                 const processorPolyPatch& next =
@@ -905,13 +906,15 @@ Foam::fiberCloud::fiberCloud
     dtSubMin_(0),
     nRemote_(0),
     nTransferred_(0),
+    nOnward_(0),
     nOutside_(0),
     nInertial_(0),
     nInertialSkipped_(0),
     nSegmentSteps_(0),
     nEscapedStep_(0),
     nDepositedStep_(0),
-    nSentStep_(0)
+    nSentStep_(0),
+    nOnwardStep_(0)
 {
     const word rule(dict.getOrDefault<word>("wallInteraction", "rebound"));
     if (!wallRuleNames.found(rule))
@@ -1002,6 +1005,7 @@ void Foam::fiberCloud::evolve(const scalar dt)
     nEscapedStep_ = 0;
     nDepositedStep_ = 0;
     nSentStep_ = 0;
+    nOnwardStep_ = 0;
 
     sampler_.resetCounters();
     hydro_.resetCounters();
@@ -1047,6 +1051,7 @@ void Foam::fiberCloud::evolve(const scalar dt)
     nEscaped_ += returnReduce(nEscapedStep_, sumOp<label>());
     nDeposited_ += returnReduce(nDepositedStep_, sumOp<label>());
     nTransferred_ = returnReduce(nSentStep_, sumOp<label>());
+    nOnward_ = returnReduce(nOnwardStep_, sumOp<label>());
 
     compact();
 }

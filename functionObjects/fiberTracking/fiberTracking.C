@@ -182,7 +182,8 @@ void Foam::functionObjects::fiberTracking::advance(const scalar dt)
     if (Pstream::parRun())
     {
         Log << ", remote segment samples " << cloud_->nRemote()
-            << ", fibers transferred " << cloud_->nTransferred();
+            << ", fibers transferred " << cloud_->nTransferred()
+            << " (" << cloud_->nOnward() << " on into a further part)";
     }
     if (cloud_->hydrodynamics().autoBound() > 0)
     {
