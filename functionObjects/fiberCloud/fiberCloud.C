@@ -162,31 +162,20 @@ fiberCloud::state stateOf(const fiber& f)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::fiberCloud::distribute
+void Foam::fiberCloud::locateInjected
 (
-    const dictionary& injectionDict,
     PtrList<fiber>& all,
-    const List<fiberInjection::origin>& origins
-)
+    const labelUList& offset,
+    labelList& owner,
+    labelList& segFound,
+    List<trackedPoint>& centre
+) const
 {
-    const label nProcs = Pstream::nProcs();
     const label myProc = Pstream::myProcNo();
-
-    // Owner: the lowest processor whose mesh holds the centre
-    labelList owner(all.size(), nProcs);
-
-    // Segments found somewhere: flattened, per fiber offset
-    labelList offset(all.size() + 1, 0);
-    forAll(all, fi)
-    {
-        offset[fi + 1] = offset[fi] + all[fi].nSegments();
-    }
-    labelList segFound(offset.last(), 0);
 
     // Centres by the cell tree; segments by tracks from the centre, the
     // cell tree only for those a track does not reach (another
     // processor's part, or around a corner)
-    List<trackedPoint> centre(all.size());
     forAll(all, fi)
     {
         constraint_.constrain(all[fi]);
@@ -230,7 +219,21 @@ void Foam::fiberCloud::distribute
     Pstream::listCombineScatter(owner);
     Pstream::listCombineGather(segFound, maxEqOp<label>());
     Pstream::listCombineScatter(segFound);
+}
 
+
+void Foam::fiberCloud::checkInjected
+(
+    const dictionary& injectionDict,
+    const PtrList<fiber>& all,
+    const List<fiberInjection::origin>& origins,
+    const labelUList& offset,
+    const labelUList& owner,
+    const labelUList& segFound
+) const
+{
+    const label nProcs = Pstream::nProcs();
+    List<point> pts;
     forAll(all, fi)
     {
         const fiberInjection::origin& o = origins[fi];
@@ -268,6 +271,31 @@ void Foam::fiberCloud::distribute
             }
         }
     }
+}
+
+
+void Foam::fiberCloud::distribute
+(
+    const dictionary& injectionDict,
+    PtrList<fiber>& all,
+    const List<fiberInjection::origin>& origins
+)
+{
+    const label myProc = Pstream::myProcNo();
+
+    // Owner: the lowest processor whose mesh holds the centre; segments
+    // found somewhere (flattened, per fiber offset)
+    labelList owner(all.size(), Pstream::nProcs());
+    labelList offset(all.size() + 1, 0);
+    forAll(all, fi)
+    {
+        offset[fi + 1] = offset[fi] + all[fi].nSegments();
+    }
+    labelList segFound(offset.last(), 0);
+    List<trackedPoint> centre(all.size());
+
+    locateInjected(all, offset, owner, segFound, centre);
+    checkInjected(injectionDict, all, origins, offset, owner, segFound);
 
     label nMine = 0;
     forAll(all, fi)
@@ -475,11 +503,19 @@ void Foam::fiberCloud::finish
     }
 
     // Move the centre's location along
-    const fiberTracker::hit c =
-        tracker_.track(f.location(), f.position() - x0);
+    centreMoved(fi, tracker_.track(f.location(), f.position() - x0));
+}
+
+
+void Foam::fiberCloud::centreMoved
+(
+    const label fi,
+    const fiberTracker::hit& c
+)
+{
     if (c.crossed)
     {
-        f.transform(c.T);
+        fibers_[fi].transform(c.T);
     }
 
     switch (c.where)
@@ -597,6 +633,44 @@ void Foam::fiberCloud::runLocal(const label fi)
 }
 
 
+void Foam::fiberCloud::sampleWaiting
+(
+    const labelUList& waiting,
+    const labelUList& offset,
+    const scalarList* h,
+    UList<fluidSample>& out
+) const
+{
+    DynamicList<fluidSampler::request> reqs;
+    DynamicList<remoteSegment> remote;
+    for (const label fi : waiting)
+    {
+        if (status_[fi] != status::waiting)
+        {
+            continue;
+        }
+        const fiber& f = fibers_[fi];
+        SubList<fluidSample> sf(out, f.nSegments(), offset[fi]);
+        vector dx(Zero);
+        tensor R(f.R());
+        if (h)
+        {
+            integrator_->predict(f, (*h)[fi], dx, R);
+        }
+        sampleSegments(fi, dx, R, sf, &reqs, &remote);
+    }
+
+    // Exchange, bring the answers into the fibers' frames
+    List<fluidSample> answers(reqs.size());
+    sampler_.exchange(reqs, answers);
+    forAll(remote, k)
+    {
+        fluidSampler::toStartFrame(remote[k].h, answers[k]);
+        out[offset[remote[k].fiber] + remote[k].segment] = answers[k];
+    }
+}
+
+
 void Foam::fiberCloud::round()
 {
     // Stage 1: the current configuration of every waiting fiber
@@ -616,41 +690,9 @@ void Foam::fiberCloud::round()
 
     List<fluidSample> s(offset.last());
     List<fluidSample> s2(offset.last());
-    DynamicList<fluidSampler::request> reqs;
-    DynamicList<remoteSegment> remote;
     scalarList h(status_.size(), Zero);
 
-    // Gather, exchange, bring the answers into the fibers' frames
-    auto collect = [&](List<fluidSample>& out, const bool predicted)
-    {
-        reqs.clear();
-        remote.clear();
-        for (const label fi : waiting)
-        {
-            if (status_[fi] != status::waiting)
-            {
-                continue;
-            }
-            const fiber& f = fibers_[fi];
-            SubList<fluidSample> sf(out, f.nSegments(), offset[fi]);
-            vector dx(Zero);
-            tensor R(f.R());
-            if (predicted)
-            {
-                integrator_->predict(f, h[fi], dx, R);
-            }
-            sampleSegments(fi, dx, R, sf, &reqs, &remote);
-        }
-        List<fluidSample> answers(reqs.size());
-        sampler_.exchange(reqs, answers);
-        forAll(remote, k)
-        {
-            fluidSampler::toStartFrame(remote[k].h, answers[k]);
-            out[offset[remote[k].fiber] + remote[k].segment] = answers[k];
-        }
-    };
-
-    collect(s, false);
+    sampleWaiting(waiting, offset, nullptr, s);
 
     // Stage 2: the configuration the integrator evaluates its forces in
     for (const label fi : waiting)
@@ -661,7 +703,7 @@ void Foam::fiberCloud::round()
 
     if (integrator_->predicts())
     {
-        collect(s2, true);
+        sampleWaiting(waiting, offset, &h, s2);
     }
 
     for (const label fi : waiting)
@@ -761,42 +803,12 @@ void Foam::fiberCloud::transfer()
             toFace_.append(-1);
 
             fiber& f = fibers_[fi];
-            const fiberTracker::hit c = tracker_.locate
-            (
-                f.position(),
-                f.location(),
-                pp.faceCells()[face]
-            );
-            if (c.crossed)
-            {
-                f.transform(c.T);
-            }
-            if (c.where == fiberTracker::stop::processor)
+            const label seed = pp.faceCells()[face];
+            centreMoved(fi, tracker_.locate(f.position(), f.location(), seed));
+            if (status_[fi] == status::moving)
             {
                 // On into a third processor's part
                 ++nOnwardStep_;
-                const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-                const label patchi = pbm.whichPatch(c.face);
-                const processorPolyPatch& next =
-                    refCast<const processorPolyPatch>(pbm[patchi]);
-                status_[fi] = status::moving;
-                toProc_[fi] = next.neighbProcNo();
-                toPatch_[fi] =
-                    mesh_.globalData().processorPatchNeighbours()[patchi];
-                toFace_[fi] = c.face - next.start();
-            }
-            else if
-            (
-                c.where == fiberTracker::stop::wall
-             || c.where == fiberTracker::stop::symmetry
-            )
-            {
-                centreAtWall(fi, c, c.where == fiberTracker::stop::symmetry);
-            }
-            else if (c.where == fiberTracker::stop::outlet)
-            {
-                status_[fi] = status::gone;
-                ++nEscapedStep_;
             }
         }
     }
