@@ -11,7 +11,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberCloud.H"
-#include "PstreamBuffers.H"
 #include "processorPolyPatch.H"
 #include "globalMeshData.H"
 #include "ListOps.H"
@@ -739,7 +738,6 @@ void Foam::fiberCloud::round()
 
 void Foam::fiberCloud::transfer()
 {
-    PstreamBuffers buf(Pstream::commsTypes::nonBlocking);
     List<DynamicList<label>> send(Pstream::nProcs());
     forAll(status_, fi)
     {
@@ -754,7 +752,8 @@ void Foam::fiberCloud::transfer()
         {
             continue;
         }
-        UOPstream os(proci, buf);
+        autoPtr<UOPstream> osPtr(neighbours_.sendStream(proci));
+        UOPstream& os = osPtr();
         os << send[proci].size();
         for (const label fi : send[proci])
         {
@@ -765,17 +764,17 @@ void Foam::fiberCloud::transfer()
             ++nSentStep_;
         }
     }
-    labelList recvSizes;
-    buf.finishedSends(recvSizes);
+    neighbours_.exchange();
 
     const labelList& procPatches = mesh_.globalData().processorPatches();
-    forAll(recvSizes, proci)
+    for (const label proci : neighbours_.neighbours())
     {
-        if (!recvSizes[proci])
+        if (!neighbours_.received(proci))
         {
             continue;
         }
-        UIPstream is(proci, buf);
+        autoPtr<UIPstream> isPtr(neighbours_.recvStream(proci));
+        UIPstream& is = isPtr();
         const label n = readLabel(is);
         for (label k = 0; k < n; ++k)
         {
@@ -907,7 +906,8 @@ Foam::fiberCloud::fiberCloud
     shearStepFactor_(positiveOrDefault(dict, "shearStepFactor", 0.1)),
     maxCo_(positiveOrDefault(dict, "maxCo", 1)),
     tracker_(mesh),
-    sampler_(mesh, tracker_, checkedScheme(dict)),
+    neighbours_(mesh),
+    sampler_(mesh, tracker_, neighbours_, checkedScheme(dict)),
     constraint_(mesh),
     cellLength_(),
     nInjected_(0),

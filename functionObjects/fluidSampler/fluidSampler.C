@@ -12,7 +12,6 @@ License
 
 #include "fluidSampler.H"
 #include "processorPolyPatch.H"
-#include "PstreamBuffers.H"
 #include "globalMeshData.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -40,11 +39,13 @@ Foam::fluidSampler::fluidSampler
 (
     const fvMesh& mesh,
     const fiberTracker& tracker,
+    neighbourExchange& neighbours,
     const word& scheme
 )
 :
     mesh_(mesh),
     tracker_(tracker),
+    neighbours_(neighbours),
     scheme_(scheme),
     UInterp_(),
     gradUInterp_(),
@@ -232,12 +233,12 @@ void Foam::fluidSampler::exchange
         index[reqs[k].proc].append(k);
     }
 
-    PstreamBuffers ask(Pstream::commsTypes::nonBlocking);
     forAll(index, proci)
     {
         if (index[proci].size())
         {
-            UOPstream os(proci, ask);
+            autoPtr<UOPstream> osPtr(neighbours_.sendStream(proci));
+            UOPstream& os = osPtr();
             os << index[proci].size();
             for (const label k : index[proci])
             {
@@ -246,21 +247,20 @@ void Foam::fluidSampler::exchange
             }
         }
     }
-    labelList recvSizes;
-    ask.finishedSends(recvSizes);
+    neighbours_.exchange();
 
     // Answer: locate the point from the cell behind the patch face, in
     // this processor's frame (processorCyclic: transformed), and send the
     // data back in the asker's frame
     const labelList& procPatches = mesh_.globalData().processorPatches();
-    PstreamBuffers answer(Pstream::commsTypes::nonBlocking);
-    for (label proci = 0; proci < nProcs; ++proci)
+    for (const label proci : neighbours_.neighbours())
     {
-        if (!recvSizes[proci])
+        if (!neighbours_.received(proci))
         {
             continue;
         }
-        UIPstream is(proci, ask);
+        autoPtr<UIPstream> isPtr(neighbours_.recvStream(proci));
+        UIPstream& is = isPtr();
         const label n = readLabel(is);
         List<fluidSample> result(n);
         request dummy;
@@ -295,11 +295,9 @@ void Foam::fluidSampler::exchange
             toStartFrame(back, result[k]);
         }
         nRemote_ += n;
-
-        UOPstream os(proci, answer);
-        os << result;
+        neighbours_.sendStream(proci)() << result;
     }
-    answer.finishedSends();
+    neighbours_.exchange();
 
     forAll(index, proci)
     {
@@ -307,8 +305,8 @@ void Foam::fluidSampler::exchange
         {
             continue;
         }
-        UIPstream is(proci, answer);
-        const List<fluidSample> result(is);
+        autoPtr<UIPstream> isPtr(neighbours_.recvStream(proci));
+        const List<fluidSample> result(isPtr());
         forAll(result, k)
         {
             answers[index[proci][k]] = result[k];
