@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberInjection.H"
+#include "keywordCheck.H"
 #include "spheroidResistance.H"
 #include "Random.H"
 #include "boundBox.H"
@@ -155,6 +156,29 @@ void Foam::fiberInjection::read
         const word setType(setDict.get<word>("type"));
         const segmentProps def(setDict);
 
+        wordList known
+        ({
+            "type", "nSegments", "segmentLength", "diameter", "density"
+        });
+        if (setType == "list")
+        {
+            known.append("fibers");
+        }
+        else if (setType == "randomBox")
+        {
+            known.append(wordList({"nFibers", "box", "seed", "direction"}));
+        }
+        else if (setType == "line")
+        {
+            known.append(wordList({"nFibers", "start", "end", "direction"}));
+        }
+        keywordCheck::warnUnknown
+        (
+            setDict,
+            known,
+            "fiber set '" + setName + "' (type " + setType + ")"
+        );
+
         if (setType == "list")
         {
             const List<dictionary> entries
@@ -171,6 +195,16 @@ void Foam::fiberInjection::read
             {
                 dictionary fd(entries[k]);
                 fd.name() = setDict.name() + "/fibers/" + Foam::name(k);
+                keywordCheck::warnUnknown
+                (
+                    fd,
+                    wordList
+                    ({
+                        "centre", "direction", "nSegments", "segmentLength",
+                        "diameter", "density"
+                    }),
+                    "fiber " + Foam::name(k) + " of set '" + setName + "'"
+                );
                 const segmentProps sp(fd, def);
                 made.append
                 (

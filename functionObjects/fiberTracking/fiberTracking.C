@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberTracking.H"
+#include "keywordCheck.H"
 #include "fvcGrad.H"
 #include "transportModel.H"
 #include "addToRunTimeSelectionTable.H"
@@ -299,6 +300,39 @@ Foam::functionObjects::fiberTracking::fiberTracking
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::functionObjects::fiberTracking::checkKeywords
+(
+    const dictionary& dict
+) const
+{
+    // The keywords of this object (Usage table) and those OpenFOAM reads
+    // for every function object
+    wordList known
+    ({
+        "type", "libs", "rhoInf", "U", "k", "epsilon", "nu",
+        "interpolationScheme", "integrator", "viscousDrag", "inertialDrag",
+        "inertialDragBound", "dragCoefficient", "shearStepFactor", "maxCo",
+        "gravity", "jefferyCorrection", "dispersion", "wallInteraction",
+        "restitution", "timePerIteration", "duration", "outputInterval",
+        "injection",
+        "functionObjectLibs", "region", "enabled", "log", "timeStart",
+        "timeEnd", "executeControl", "executeInterval", "writeControl",
+        "writeInterval", "outputControl", "writePrecision", "writeToFile",
+        "useUserTime", "updateHeader", "subRegion"
+    });
+    const word model(dict.getOrDefault<word>("dispersion", "none"));
+    known.append(model + "Coeffs");
+    keywordCheck::warnUnknown(dict, known, "fiberTracking " + name());
+
+    if (dict.getOrDefault<scalar>("writeInterval", 1) < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'writeInterval' must not be negative, not "
+            << dict.get<scalar>("writeInterval") << exit(FatalIOError);
+    }
+}
+
+
 bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
 {
     fvMeshFunctionObject::read(dict);
@@ -314,6 +348,8 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
     }
 
     Info<< type() << " " << name() << ":" << nl;
+
+    checkKeywords(dict);
 
     UName_ = dict.getOrDefault<word>("U", "U");
     kName_ = dict.getOrDefault<word>("k", "k");

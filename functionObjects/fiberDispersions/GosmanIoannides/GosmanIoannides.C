@@ -13,6 +13,7 @@ License
 #include "GosmanIoannides.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
+#include "keywordCheck.H"
 
 #include <cmath>
 #include <cstdint>
@@ -59,6 +60,12 @@ Foam::fiberDispersions::GosmanIoannides::GosmanIoannides
     seed_(coeffs.getOrDefault<label>("seed", 1)),
     CmuN_(0)
 {
+    keywordCheck::warnUnknown
+    (
+        coeffs,
+        wordList({"Cmu", "CmuExponent", "seed"}),
+        "GosmanIoannidesCoeffs"
+    );
     if (!(Cmu_ > 0))
     {
         FatalIOErrorInFunction(coeffs)

@@ -1,0 +1,90 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "keywordCheck.H"
+#include "labelList.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::keywordCheck::distance
+(
+    const std::string& a,
+    const std::string& b
+)
+{
+    // One row of the dynamic-programming table at a time
+    labelList prev(b.size() + 1), cur(b.size() + 1);
+    forAll(prev, j)
+    {
+        prev[j] = j;
+    }
+    for (size_t i = 1; i <= a.size(); ++i)
+    {
+        cur[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j)
+        {
+            const label sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+            cur[j] = min(sub, min(prev[j], cur[j - 1]) + 1);
+        }
+        prev.swap(cur);
+    }
+    return prev[b.size()];
+}
+
+
+Foam::word Foam::keywordCheck::nearest
+(
+    const word& key,
+    const UList<word>& known
+)
+{
+    word best;
+    label dBest = labelMax;
+    for (const word& k : known)
+    {
+        const label d = distance(key, k);
+        if (d < dBest)
+        {
+            dBest = d;
+            best = k;
+        }
+    }
+    return best;
+}
+
+
+Foam::label Foam::keywordCheck::warnUnknown
+(
+    const dictionary& dict,
+    const UList<word>& known,
+    const word& where
+)
+{
+    label nUnknown = 0;
+    for (const entry& e : dict)
+    {
+        const word& key = e.keyword();
+        if (known.found(key))
+        {
+            continue;
+        }
+        ++nUnknown;
+        IOWarningInFunction(dict)
+            << "Unknown entry '" << key << "' in " << where
+            << ": ignored. Did you mean '" << nearest(key, known) << "'?"
+            << endl;
+    }
+    return nUnknown;
+}
+
+
+// ************************************************************************* //
