@@ -525,15 +525,14 @@ void Foam::fiberCloud::centreMoved
         }
         case fiberTracker::stop::processor:
         {
-            const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-            const label patchi = pbm.whichPatch(c.face);
-            const processorPolyPatch& pp =
-                refCast<const processorPolyPatch>(pbm[patchi]);
             status_[fi] = status::moving;
-            toProc_[fi] = pp.neighbProcNo();
-            toPatch_[fi] =
-                mesh_.globalData().processorPatchNeighbours()[patchi];
-            toFace_[fi] = c.face - pp.start();
+            tracker_.processorAddress
+            (
+                c.face,
+                toProc_[fi],
+                toPatch_[fi],
+                toFace_[fi]
+            );
             break;
         }
         case fiberTracker::stop::wall:
@@ -559,27 +558,42 @@ void Foam::fiberCloud::centreAtWall
     const bool mirror
 )
 {
-    if (wallRule_ == wallRule::deposit && !mirror)
-    {
-        deposit(fi);
-        return;
-    }
+    // Rebound off the face hit; on a curved wall or in a corner the way
+    // back can meet another wall face: rebound off that one in turn
     fiber& f = fibers_[fi];
-    const vector& Sf = mesh_.faceAreas()[c.face];
-    const vector n(Sf/mag(Sf));
-    const point onWall(tracker_.position(f.location()));
-    rebound(f, n, max(c.left & n, scalar(0)), mirror ? 1 : restitution_);
-    const fiberTracker::hit back =
-        tracker_.track(f.location(), f.position() - onWall, c.face);
-    if (back.crossed)
+    fiberTracker::hit h(c);
+    bool isMirror = mirror;
+    for (label k = 0; k < 8; ++k)
     {
-        f.transform(back.T);
+        if (wallRule_ == wallRule::deposit && !isMirror)
+        {
+            deposit(fi);
+            return;
+        }
+        const vector& Sf = mesh_.faceAreas()[h.face];
+        const vector n(Sf/mag(Sf));
+        const point onWall(tracker_.position(f.location()));
+        const scalar e = isMirror ? 1 : restitution_;
+        rebound(f, n, max(h.left & n, scalar(0)), e);
+        h = tracker_.track(f.location(), f.position() - onWall, h.face);
+        if
+        (
+            h.where != fiberTracker::stop::wall
+         && h.where != fiberTracker::stop::symmetry
+        )
+        {
+            centreMoved(fi, h);
+            return;
+        }
+        if (h.crossed)
+        {
+            f.transform(h.T);
+        }
+        isMirror = (h.where == fiberTracker::stop::symmetry);
     }
-    if (back.where != fiberTracker::stop::none)
-    {
-        // A rebound that did not bring it back (a corner): deposited
-        deposit(fi);
-    }
+
+    // Rebounds that do not bring it back: deposited
+    deposit(fi);
 }
 
 
@@ -766,7 +780,6 @@ void Foam::fiberCloud::transfer()
     }
     neighbours_.exchange();
 
-    const labelList& procPatches = mesh_.globalData().processorPatches();
     for (const label proci : neighbours_.neighbours())
     {
         if (!neighbours_.received(proci))
@@ -784,10 +797,7 @@ void Foam::fiberCloud::transfer()
             const label nSub = readLabel(is);
             autoPtr<fiber> fPtr(new fiber(is));
 
-            const processorPolyPatch& pp = refCast<const processorPolyPatch>
-            (
-                mesh_.boundaryMesh()[procPatches[patch]]
-            );
+            const processorPolyPatch& pp = tracker_.processorPatch(patch);
             // processorCyclic: into this side's frame
             const vectorTensorTransform T(fiberTracker::receiving(pp, face));
             fPtr->transform(T);

@@ -20,6 +20,7 @@ License
 #include "symmetryPlanePolyPatch.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
+#include "globalMeshData.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -168,6 +169,36 @@ Foam::vectorTensorTransform Foam::fiberTracker::after
         a.t() + (a.R() & b.t()),
         a.R() & b.R(),
         true
+    );
+}
+
+
+void Foam::fiberTracker::processorAddress
+(
+    const label facei,
+    label& proc,
+    label& patch,
+    label& patchFace
+) const
+{
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const label patchi = pbm.whichPatch(facei);
+    const processorPolyPatch& pp =
+        refCast<const processorPolyPatch>(pbm[patchi]);
+    proc = pp.neighbProcNo();
+    patch = mesh_.globalData().processorPatchNeighbours()[patchi];
+    patchFace = facei - pp.start();
+}
+
+
+const Foam::processorPolyPatch& Foam::fiberTracker::processorPatch
+(
+    const label patch
+) const
+{
+    return refCast<const processorPolyPatch>
+    (
+        mesh_.boundaryMesh()[mesh_.globalData().processorPatches()[patch]]
     );
 }
 

@@ -170,13 +170,7 @@ bool Foam::fluidSampler::sample
 
     if (h.where == stop::processor)
     {
-        const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-        const label patchi = pbm.whichPatch(h.face);
-        const processorPolyPatch& pp =
-            refCast<const processorPolyPatch>(pbm[patchi]);
-        req.proc = pp.neighbProcNo();
-        req.patch = mesh_.globalData().processorPatchNeighbours()[patchi];
-        req.face = h.face - pp.start();
+        tracker_.processorAddress(h.face, req.proc, req.patch, req.face);
         req.p = tracker_.position(tp) + h.left;
         return false;
     }
@@ -252,7 +246,6 @@ void Foam::fluidSampler::exchange
     // Answer: locate the point from the cell behind the patch face, in
     // this processor's frame (processorCyclic: transformed), and send the
     // data back in the asker's frame
-    const labelList& procPatches = mesh_.globalData().processorPatches();
     for (const label proci : neighbours_.neighbours())
     {
         if (!neighbours_.received(proci))
@@ -269,10 +262,7 @@ void Foam::fluidSampler::exchange
             label patch, face;
             point p;
             is >> patch >> face >> p;
-            const processorPolyPatch& pp = refCast<const processorPolyPatch>
-            (
-                mesh_.boundaryMesh()[procPatches[patch]]
-            );
+            const processorPolyPatch& pp = tracker_.processorPatch(patch);
             const vectorTensorTransform T
             (
                 fiberTracker::receiving(pp, face)
