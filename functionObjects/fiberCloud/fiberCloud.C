@@ -1033,6 +1033,22 @@ void Foam::fiberCloud::evolve(const scalar dt)
     hydro_.resetCounters();
     dtSubMin_ = dt;
 
+    // A moving mesh carries the stored locations with it: bring each back
+    // to its fiber's centre
+    if (mesh_.moving())
+    {
+        forAll(fibers_, fi)
+        {
+            fiber& f = fibers_[fi];
+            trackedPoint& loc = f.location();
+            centreMoved
+            (
+                fi,
+                tracker_.track(loc, f.position() - tracker_.position(loc))
+            );
+        }
+    }
+
     while (true)
     {
         forAll(fibers_, fi)
