@@ -66,6 +66,31 @@ Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
     // The tet base points are built collectively: on every processor now,
     // not on the first that happens to track
     (void)mesh_.tetBasePtIs();
+
+    // A cyclicAMI crossing is resolved on the processor the point is on:
+    // both sides of every AMI pair must be there (as OpenFOAM's Cloud
+    // requires)
+    forAll(pbm, patchi)
+    {
+        if (kind_[patchi] != patchKind::cyclicAMI)
+        {
+            continue;
+        }
+        const cyclicAMIPolyPatch& cpp =
+            refCast<const cyclicAMIPolyPatch>(pbm[patchi]);
+        if (cpp.owner() && cpp.AMI().singlePatchProc() == -1)
+        {
+            FatalErrorInFunction
+                << "The cyclicAMI patches " << cpp.name() << " and "
+                << cpp.neighbPatchName() << " are split over processors;"
+                << " fibers can cross an AMI pair only where both sides lie"
+                << " on one processor." << nl
+                << "    Keep them together in system/decomposeParDict,"
+                << " e.g. constraints { ami { type singleProcessorFaceSets;"
+                << " singleProcessorFaceSets ((<faceSet of both patches>"
+                << " -1)); } }, or run in serial" << exit(FatalError);
+        }
+    }
 }
 
 

@@ -30,6 +30,37 @@ namespace functionObjects
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// In post-processing OpenFOAM catches the errors of a function object,
+// prints them as warnings and goes on without it: while one lives, errors
+// end the run instead (a mistake in the dictionary must stop it)
+class errorsEndTheRun
+{
+    const bool throwing_;
+    const bool throwingIO_;
+
+public:
+
+    errorsEndTheRun()
+    :
+        throwing_(Foam::FatalError.throwExceptions(false)),
+        throwingIO_(Foam::FatalIOError.throwExceptions(false))
+    {}
+
+    ~errorsEndTheRun()
+    {
+        Foam::FatalError.throwExceptions(throwing_);
+        Foam::FatalIOError.throwExceptions(throwingIO_);
+    }
+};
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::functionObjects::fiberTracking::checkFields
@@ -349,6 +380,7 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
 
     Info<< type() << " " << name() << ":" << nl;
 
+    const errorsEndTheRun guard;
     checkKeywords(dict);
 
     UName_ = dict.getOrDefault<word>("U", "U");
@@ -546,11 +578,10 @@ bool Foam::functionObjects::fiberTracking::execute()
     // Post-processing: the solver has built the fields of this time
     if (!started_)
     {
-        // Errors here must stop the run: the post-processing loop would
-        // only print a caught FatalIOError as a warning
-        const bool throwing = FatalIOError.throwExceptions(false);
-        checkFields(dict_);
-        FatalIOError.throwExceptions(throwing);
+        {
+            const errorsEndTheRun guard;
+            checkFields(dict_);
+        }
 
         // With a duration the fiber time starts at zero on the frozen
         // field (the time of a steady run counts iterations); without,
