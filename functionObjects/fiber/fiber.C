@@ -99,7 +99,8 @@ Foam::fiber::fiber
     psi_(Zero),
     eddyTime_(0),
     nDraws_(0),
-    location_()
+    location_(),
+    segmentLocations_(lengths.size())
 {
     forAll(z0_, i)
     {
@@ -258,6 +259,7 @@ void Foam::fiber::move
 
 void Foam::fiber::transform(const vectorTensorTransform& T)
 {
+    clearSegmentLocations();
     x_ = T.transformPosition(x_);
     if (!T.hasR())
     {

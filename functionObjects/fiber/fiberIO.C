@@ -40,7 +40,8 @@ Foam::fiber::fiber(Istream& is)
     psi_(is),
     eddyTime_(readScalar(is)),
     nDraws_(readLabel(is)),
-    location_()
+    location_(),
+    segmentLocations_(l_.size())
 {
     is.check(FUNCTION_NAME);
     calcProperties();

@@ -356,6 +356,53 @@ void Foam::fiberCloud::calcCellLength()
 }
 
 
+Foam::fiberTracker::hit Foam::fiberCloud::locateSegment
+(
+    fiber& f,
+    const label i,
+    const vector& d,
+    const bool store,
+    trackedPoint& tp
+) const
+{
+    typedef fiberTracker::stop stop;
+    const fiberTracker::hit here
+    {
+        stop::none, -1, Zero, false, vectorTensorTransform::I
+    };
+    const trackedPoint& centre = f.location();
+    trackedPoint& cached = f.segmentLocations()[i];
+
+    // A segment at the centre: the centre's location
+    if (magSqr(d) == 0)
+    {
+        tp = centre;
+        return here;
+    }
+
+    // From where the segment was (a short walk), else from the centre
+    fiberTracker::hit h(here);
+    bool found = false;
+    if (cached.located())
+    {
+        tp = cached;
+        h = tracker_.track(tp, f.position() + d - tracker_.position(tp));
+        found = (h.where == stop::none && !h.crossed);
+    }
+    if (!found)
+    {
+        tp = centre;
+        h = tracker_.track(tp, d);
+    }
+    if (store)
+    {
+        cached =
+            (h.where == stop::none && !h.crossed) ? tp : trackedPoint();
+    }
+    return h;
+}
+
+
 bool Foam::fiberCloud::sampleSegments
 (
     const label fi,
@@ -364,26 +411,18 @@ bool Foam::fiberCloud::sampleSegments
     UList<fluidSample>& s,
     DynamicList<fluidSampler::request>* reqs,
     DynamicList<remoteSegment>* remote
-) const
+)
 {
-    const fiber& f = fibers_[fi];
-    const trackedPoint& centre = f.location();
+    fiber& f = fibers_[fi];
     fluidSampler::request req;
     bool allLocal = true;
+    const bool current = (magSqr(dx) == 0);
 
     for (label i = 0; i < f.nSegments(); ++i)
     {
-        // From the centre's location (at f.position() up to round-off)
-        const vector d(dx + f.segmentOffset(R, i));
-        trackedPoint tp(centre);
+        trackedPoint tp;
         const fiberTracker::hit h =
-            magSqr(d) > 0
-          ? tracker_.track(tp, d)
-          : fiberTracker::hit
-            {
-                fiberTracker::stop::none, -1, Zero, false,
-                vectorTensorTransform::I
-            };
+            locateSegment(f, i, dx + f.segmentOffset(R, i), current, tp);
 
         if (sampler_.sample(tp, h, s[i], req))
         {
@@ -652,7 +691,7 @@ void Foam::fiberCloud::sampleWaiting
     const labelUList& offset,
     const scalarList* h,
     UList<fluidSample>& out
-) const
+)
 {
     DynamicList<fluidSampler::request> reqs;
     DynamicList<remoteSegment> remote;
