@@ -470,14 +470,24 @@ bool Foam::fiberCloud::prepare
             return false;
         }
         // Back inside, then the step goes on with these samples, taken
-        // on the wall face (a fiber pressed onto a wall slides along it)
-        rebound
+        // on the wall face (a fiber pressed onto a wall slides along it);
+        // the centre's location moves along
+        const vector shift
         (
-            f,
-            s[iWall].nWall,
-            s[iWall].dWall,
-            s[iWall].mirror ? 1 : restitution_
+            rebound
+            (
+                f,
+                s[iWall].nWall,
+                s[iWall].dWall,
+                s[iWall].mirror ? 1 : restitution_
+            )
         );
+        const status before = status_[fi];
+        centreMoved(fi, tracker_.track(f.location(), shift));
+        if (status_[fi] != before)
+        {
+            return false;
+        }
     }
 
     // Equal parts of the time left: Eq. 22 and the cell limit
@@ -893,7 +903,7 @@ void Foam::fiberCloud::compact()
 }
 
 
-void Foam::fiberCloud::rebound
+Foam::vector Foam::fiberCloud::rebound
 (
     fiber& f,
     const vector& n,
@@ -903,7 +913,8 @@ void Foam::fiberCloud::rebound
 {
     // Back inside the wall plane, with a margin of a thousandth of the
     // penetration and a millionth of the diameter
-    f.translate(-((1 + 1e-3)*d + 1e-6*f.minDiameter())*n);
+    const vector shift(-((1 + 1e-3)*d + 1e-6*f.minDiameter())*n);
+    f.translate(shift);
 
     f.clearHistory();
     const scalar vn = f.velocity() & n;
@@ -911,6 +922,7 @@ void Foam::fiberCloud::rebound
     {
         f.setVelocity(f.velocity() - (1 + e)*vn*n);
     }
+    return shift;
 }
 
 
