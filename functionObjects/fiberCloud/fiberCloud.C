@@ -563,7 +563,16 @@ void Foam::fiberCloud::centreMoved
 {
     if (c.crossed)
     {
-        fibers_[fi].transform(c.T);
+        fiber& f = fibers_[fi];
+        f.transform(c.T);
+        if (c.where == fiberTracker::stop::none)
+        {
+            // The location went across face to matching face; on a mesh
+            // whose periodic faces match only to its matchTolerance that
+            // image and the transformed centre differ by the mismatch:
+            // the fiber follows its location
+            f.translate(tracker_.position(f.location()) - f.position());
+        }
     }
 
     switch (c.where)
@@ -1143,6 +1152,27 @@ void Foam::fiberCloud::evolve(const scalar dt)
     nOnward_ = returnReduce(nOnwardStep_, sumOp<label>());
 
     compact();
+    checkLocations();
+}
+
+
+void Foam::fiberCloud::checkLocations() const
+{
+    forAll(fibers_, fi)
+    {
+        const fiber& f = fibers_[fi];
+        const scalar off =
+            mag(tracker_.position(f.location()) - f.position());
+        if (off > 1e-6*f.length())
+        {
+            FatalErrorInFunction
+                << "Fiber " << f.id() << ": its mesh location is "
+                << off << " m off its centre " << f.position()
+                << " (fiber length " << f.length() << "): the tracking"
+                << " lost the fiber. Please report this case."
+                << exit(FatalError);
+        }
+    }
 }
 
 
