@@ -871,7 +871,19 @@ void Foam::fiberCloud::transfer()
 
             fiber& f = fibers_[fi];
             const label seed = pp.faceCells()[face];
-            centreMoved(fi, tracker_.locate(f.position(), f.location(), seed));
+            fiberTracker::hit c =
+                tracker_.locate(f.position(), f.location(), seed);
+            if
+            (
+                c.where == fiberTracker::stop::processor
+             && mag(c.left) < 1e-9*f.length()
+            )
+            {
+                // A centre on the processor face itself (round-off): it
+                // stays here rather than going back and forth
+                c.where = fiberTracker::stop::none;
+            }
+            centreMoved(fi, c);
             if (status_[fi] == status::moving)
             {
                 // On into a third processor's part
