@@ -117,18 +117,31 @@ void Foam::fiberIntegrator::solve
         const fluidSample& s = samples[i];
         const vector Omega(s.Omega());
         const vector r(f.segmentOffset(R, i));
-        const tensor S(fiberHydrodynamics::crossMatrix(r));
 
         hydro.law(f, i, R, s, V0 + (w0 ^ r), w0, k);
 
         // F_i = -Kuu V + (Kuu S - Kuw) w + Fs, with v_i = V - S w
+        const vector Fs((k.Kuu & s.U) + (k.Kuw & Omega) + k.f0);
+        const vector Ts((k.Kwu & s.U) + (k.Kww & Omega) + k.t0);
+
+        if (magSqr(r) == 0)
+        {
+            // A segment at the centre of mass (S = 0): the lever-arm
+            // terms vanish
+            addBlock(M, 0, 0, k.Kuu);
+            addBlock(M, 0, 3, k.Kuw);
+            addBlock(rhs, 0, Fs);
+            addBlock(M, 3, 0, k.Kwu);
+            addBlock(M, 3, 3, k.Kww);
+            addBlock(rhs, 3, Ts);
+            continue;
+        }
+
+        const tensor S(fiberHydrodynamics::crossMatrix(r));
         const tensor FV(-k.Kuu);
         const tensor Fw((k.Kuu & S) - k.Kuw);
-        const vector Fs((k.Kuu & s.U) + (k.Kuw & Omega) + k.f0);
-
         const tensor TV(-k.Kwu);
         const tensor Tw((k.Kwu & S) - k.Kww);
-        const vector Ts((k.Kwu & s.U) + (k.Kww & Omega) + k.t0);
 
         // Linear momentum
         addBlock(M, 0, 0, -FV);
