@@ -12,9 +12,7 @@ License
 
 #include "fiberCloud.H"
 #include "processorPolyPatch.H"
-#include "globalMeshData.H"
 #include "ListOps.H"
-#include "wallPolyPatch.H"
 #include "Switch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
