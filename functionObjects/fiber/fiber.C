@@ -96,6 +96,8 @@ Foam::fiber::fiber
     vPrev_(Zero),
     omegaPrev_(Zero),
     hPrev_(0),
+    hNext_(0),
+    jumped_(true),
     psi_(Zero),
     eddyTime_(0),
     nDraws_(0),

@@ -37,6 +37,8 @@ Foam::fiber::fiber(Istream& is)
     vPrev_(is),
     omegaPrev_(is),
     hPrev_(readScalar(is)),
+    hNext_(readScalar(is)),
+    jumped_(readBool(is)),
     psi_(is),
     eddyTime_(readScalar(is)),
     nDraws_(readLabel(is)),
@@ -69,6 +71,8 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
         << f.vPrev_ << token::SPACE
         << f.omegaPrev_ << token::SPACE
         << f.hPrev_ << token::SPACE
+        << f.hNext_ << token::SPACE
+        << f.jumped_ << token::SPACE
         << f.psi_ << token::SPACE
         << f.eddyTime_ << token::SPACE
         << f.nDraws_;

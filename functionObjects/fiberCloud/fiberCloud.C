@@ -488,27 +488,15 @@ bool Foam::fiberCloud::prepare
         }
     }
 
-    // Equal parts of the time left: Eq. 22 and the cell limit
-    scalar gammaDot = 0;
-    scalar speed = mag(f.velocity()) + 0.5*mag(f.omega())*f.length();
-    forAll(s, i)
-    {
-        gammaDot = max(gammaDot, s[i].shearRate());
-        speed = max(speed, mag(s[i].U));
-    }
-    const scalar rc = f.length()/f.minDiameter();
-    const scalar cellLength = cellLength_[f.location().celli];
-    const scalar parts = tLeft_[fi]*max
-    (
-        rc*gammaDot/shearStepFactor_,
-        speed/(maxCo_*cellLength)
-    );
+    // Equal parts of the time left, at the rate the step control asks
+    const scalar parts =
+        tLeft_[fi]*control_.rate(f, s, cellLength_[f.location().celli]);
     if (parts > labelMax/2)
     {
         FatalErrorInFunction
             << "Fiber " << f.id() << " needs " << parts
-            << " sub-steps over " << tLeft_[fi] << " s (shear rate "
-            << gammaDot << ", speed " << speed << ")" << exit(FatalError);
+            << " sub-steps over " << tLeft_[fi] << " s"
+            << exit(FatalError);
     }
     // Round-off tolerant: a count that is an integer up to round-off
     // (uniform shear) must not flip to the next one
@@ -534,9 +522,17 @@ void Foam::fiberCloud::finish
 {
     fiber& f = fibers_[fi];
     const point x0(f.position());
+    const fiber::motion m0(f.saveMotion());
 
     integrator_->advance(f, s, hydro_, g_, h);
     constraint_.constrain(f);
+    if (!control_.update(f, s, h))
+    {
+        // Rejected: undone, to be taken again with a shorter step
+        f.restoreMotion(m0);
+        ++nRejected_;
+        return;
+    }
     nSegmentSteps_ += f.nSegments();
     dispersion_->elapse(f, h);
     dtSubMin_ = min(dtSubMin_, h);
@@ -601,6 +597,10 @@ void Foam::fiberCloud::centreMoved
         {
             status_[fi] = status::gone;
             ++nEscapedStep_;
+            ++nEscapedOutletStep_
+            [
+                outletIndex_[mesh_.boundaryMesh().whichPatch(c.face)]
+            ];
             break;
         }
     }
@@ -983,8 +983,7 @@ Foam::fiberCloud::fiberCloud
     wallRule_(wallRule::rebound),
     restitution_(dict.getOrDefault<scalar>("restitution", 1)),
     g_(g),
-    shearStepFactor_(positiveOrDefault(dict, "shearStepFactor", 0.1)),
-    maxCo_(positiveOrDefault(dict, "maxCo", 1)),
+    control_(dict),
     tracker_(mesh),
     neighbours_(mesh),
     sampler_(mesh, tracker_, neighbours_, checkedScheme(dict)),
@@ -993,6 +992,10 @@ Foam::fiberCloud::fiberCloud
     nInjected_(0),
     nEscaped_(0),
     nDeposited_(0),
+    outlets_(tracker_.outletPatches()),
+    outletIndex_(mesh.boundaryMesh().size(), -1),
+    nEscapedOutlet_(outlets_.size(), 0),
+    nEscapedOutletStep_(outlets_.size(), 0),
     deposits_(),
     nSubMax_(0),
     dtSubMin_(0),
@@ -1003,6 +1006,7 @@ Foam::fiberCloud::fiberCloud
     nInertial_(0),
     nInertialSkipped_(0),
     nSegmentSteps_(0),
+    nRejected_(0),
     nEscapedStep_(0),
     nDepositedStep_(0),
     nSentStep_(0),
@@ -1037,8 +1041,11 @@ Foam::fiberCloud::fiberCloud
         Info<< "    2-D case: fibers held in the plane (free directions "
             << constraint_.freeDirections() << "), gravity " << g_ << endl;
     }
-    Info<< "    Sub-steps: Eq. 22 with shearStepFactor " << shearStepFactor_
-        << ", at most maxCo " << maxCo_ << " cell lengths" << endl;
+    control_.report(Info);
+    forAll(outlets_, i)
+    {
+        outletIndex_[outlets_[i]] = i;
+    }
     calcCellLength();
 
     const dictionary& injectionDict = dict.subDict("injection");
@@ -1095,6 +1102,7 @@ void Foam::fiberCloud::evolve(const scalar dt)
     toFace_.setSize(nF);
     toFace_ = -1;
     nEscapedStep_ = 0;
+    nEscapedOutletStep_ = 0;
     nDepositedStep_ = 0;
     nSentStep_ = 0;
     nOnwardStep_ = 0;
@@ -1157,6 +1165,11 @@ void Foam::fiberCloud::evolve(const scalar dt)
     nInertial_ = returnReduce(hydro_.nInertial(), sumOp<label>());
     nInertialSkipped_ = returnReduce(hydro_.nSkipped(), sumOp<label>());
     nEscaped_ += returnReduce(nEscapedStep_, sumOp<label>());
+    reduce(nEscapedOutletStep_, sumOp<labelList>());
+    forAll(nEscapedOutlet_, i)
+    {
+        nEscapedOutlet_[i] += nEscapedOutletStep_[i];
+    }
     nDeposited_ += returnReduce(nDepositedStep_, sumOp<label>());
     nTransferred_ = returnReduce(nSentStep_, sumOp<label>());
     nOnward_ = returnReduce(nOnwardStep_, sumOp<label>());

@@ -228,6 +228,20 @@ const Foam::processorPolyPatch& Foam::fiberTracker::processorPatch
 }
 
 
+Foam::labelList Foam::fiberTracker::outletPatches() const
+{
+    DynamicList<label> out;
+    forAll(kind_, patchi)
+    {
+        if (kind_[patchi] == patchKind::outlet)
+        {
+            out.append(patchi);
+        }
+    }
+    return labelList(std::move(out));
+}
+
+
 Foam::point Foam::fiberTracker::position(const trackedPoint& tp) const
 {
     particle p(mesh_, tp.coordinates, tp.celli, tp.tetFacei, tp.tetPti);

@@ -211,6 +211,10 @@ void Foam::functionObjects::fiberTracking::advance(const scalar dt)
         << " (smallest " << cloud_->dtSubMin() << " s), fiber CPU time "
         << cpuFibers_ << " s for " << cloud_->nSegmentSteps()
         << " segment steps";
+    if (cloud_->control().control() == subStepControl::mode::tolerance)
+    {
+        Log << " (" << cloud_->nRejected() << " sub-steps rejected)";
+    }
     if (Pstream::parRun())
     {
         Log << ", remote segment samples " << cloud_->nRemote()
@@ -252,12 +256,29 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
         os << endl;
     }
 
-    if (s.nInjected != s.nActive + s.nEscaped + s.nDeposited)
+    if (Pstream::master() && outletFilePtr_.valid())
+    {
+        OFstream& os = outletFilePtr_();
+        os  << fiberTime_;
+        for (const label n : cloud_->nEscapedOutlet())
+        {
+            os << tab << n;
+        }
+        os << endl;
+    }
+
+    if
+    (
+        s.nInjected != s.nActive + s.nEscaped + s.nDeposited
+     || s.nEscaped != sum(cloud_->nEscapedOutlet())
+    )
     {
         FatalErrorInFunction
             << "Fiber count broken: injected " << s.nInjected
             << " != active " << s.nActive << " + escaped " << s.nEscaped
-            << " + deposited " << s.nDeposited << exit(FatalError);
+            << " + deposited " << s.nDeposited << ", or escaped != "
+            << cloud_->nEscapedOutlet() << " summed over the outlets"
+            << exit(FatalError);
     }
 
     // Deposits since the last call
@@ -323,7 +344,8 @@ Foam::functionObjects::fiberTracking::fiberTracking
     kDisk_(),
     epsilonDisk_(),
     stateFilePtr_(),
-    depositFilePtr_()
+    depositFilePtr_(),
+    outletFilePtr_()
 {
     read(dict);
 }
@@ -342,7 +364,8 @@ void Foam::functionObjects::fiberTracking::checkKeywords
     ({
         "type", "libs", "rhoInf", "U", "k", "epsilon", "nu",
         "interpolationScheme", "integrator", "viscousDrag", "inertialDrag",
-        "inertialDragBound", "dragCoefficient", "shearStepFactor", "maxCo",
+        "inertialDragBound", "dragCoefficient", "subStepControl",
+        "shearStepFactor", "tolerance", "maxRotation", "maxCo",
         "gravity", "jefferyCorrection", "dispersion", "wallInteraction",
         "restitution", "timePerIteration", "duration", "outputInterval",
         "injection",
@@ -546,6 +569,21 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
             writeHeader(depositFilePtr_(), "Deposited fibers (fiberTracking)");
             writeCommented(depositFilePtr_(), stateColumns);
             depositFilePtr_() << endl;
+        }
+
+        const labelList& outlets = cloud_->outlets();
+        if (outlets.size())
+        {
+            outletFilePtr_ = createFile("fiberOutlets");
+            OFstream& os = outletFilePtr_();
+            writeHeader(os, "Fibers escaped per outlet patch (fiberTracking)");
+            string columns("Time");
+            for (const label patchi : outlets)
+            {
+                columns += " " + mesh_.boundaryMesh()[patchi].name();
+            }
+            writeCommented(os, columns);
+            os << endl;
         }
     }
 

@@ -175,6 +175,7 @@ Foam::scalar Foam::fiberDispersions::GosmanIoannides::correct
     {
         f.psi() = gaussian(seed_, f.id(), f.nDraws());
         ++f.nDraws();
+        f.jumped() = true;
     }
 
     scalar tInteraction = GREAT;

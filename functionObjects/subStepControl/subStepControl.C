@@ -1,0 +1,276 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "subStepControl.H"
+
+// * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::subStepControl::mode>
+Foam::subStepControl::modeNames
+({
+    { mode::paper, "paper" },
+    { mode::tolerance, "tolerance" },
+});
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+scalar positive(const dictionary& dict, const word& key, const scalar def)
+{
+    const scalar v = dict.getOrDefault<scalar>(key, def);
+    if (!(v > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' must be positive, not " << v
+            << exit(FatalIOError);
+    }
+    return v;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::subStepControl::subStepControl(const dictionary& dict)
+:
+    mode_(mode::paper),
+    shearStepFactor_(positive(dict, "shearStepFactor", 0.1)),
+    tolerance_(positive(dict, "tolerance", 3e-3)),
+    maxRotation_(positive(dict, "maxRotation", 0.2)),
+    maxCo_(positive(dict, "maxCo", 1))
+{
+    const word m(dict.getOrDefault<word>("subStepControl", "paper"));
+    if (!modeNames.found(m))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'subStepControl': unknown control '" << m
+            << "'; valid controls: " << modeNames.sortedToc()
+            << exit(FatalIOError);
+    }
+    mode_ = modeNames[m];
+
+    // An entry of the other control is a mistake worth one message
+    const wordList unused
+    (
+        mode_ == mode::paper
+      ? wordList({"tolerance", "maxRotation"})
+      : wordList({"shearStepFactor"})
+    );
+    for (const word& key : unused)
+    {
+        if (dict.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << key << "' has no effect with subStepControl "
+                << m << "; remove it or set subStepControl "
+                << (mode_ == mode::paper ? "tolerance" : "paper")
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+Foam::subStepControl::subStepControl
+(
+    const mode m,
+    const scalar shearStepFactor,
+    const scalar tolerance,
+    const scalar maxRotation,
+    const scalar maxCo
+)
+:
+    mode_(m),
+    shearStepFactor_(shearStepFactor),
+    tolerance_(tolerance),
+    maxRotation_(maxRotation),
+    maxCo_(maxCo)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::subStepControl::tipSpeed
+(
+    const fiber& f,
+    const tensor& R,
+    const vector& w
+)
+{
+    scalar u = 0;
+    for (label i = 0; i < f.nSegments(); ++i)
+    {
+        const vector r(f.segmentOffset(R, i));
+        const vector a((0.5*f.segmentLength(i))*f.segmentDirection(R, i));
+        u = max(u, max(mag(w ^ (r + a)), mag(w ^ (r - a))));
+    }
+    return u;
+}
+
+
+void Foam::subStepControl::scales
+(
+    const fiber& f,
+    const UList<fluidSample>& s,
+    scalar& gammaDot,
+    scalar& speed,
+    scalar& dudt
+)
+{
+    const tensor R(f.R());
+    gammaDot = 0;
+    speed = mag(f.velocity());
+    dudt = 0;
+    forAll(s, i)
+    {
+        const vector vi(f.velocity() + (f.omega() ^ f.segmentOffset(R, i)));
+        gammaDot = max(gammaDot, s[i].shearRate());
+        speed = max(speed, max(mag(s[i].U), mag(vi)));
+        dudt = max(dudt, mag(s[i].G & vi));
+    }
+}
+
+
+Foam::scalar Foam::subStepControl::rate
+(
+    const fiber& f,
+    const UList<fluidSample>& s,
+    const scalar cellLength
+) const
+{
+    scalar gammaDot, speed, dudt;
+    scales(f, s, gammaDot, speed, dudt);
+    const scalar cells = speed/(maxCo_*cellLength);
+
+    if (mode_ == mode::paper)
+    {
+        const scalar rc = f.length()/f.minDiameter();
+        return max(rc*gammaDot/shearStepFactor_, cells);
+    }
+
+    // The rotation and the lag of the sampled fluid (see Description)
+    const scalar turn = 2*tipSpeed(f, f.R(), f.omega())/f.length();
+    scalar r = max(cells, max(gammaDot, turn)/maxRotation_);
+    if (dudt > 0)
+    {
+        r = max(r, dudt/(2*tolerance_*speed));
+    }
+    if (f.hNext() > 0)
+    {
+        return max(r, 1/f.hNext());
+    }
+
+    // First step, no estimate yet: a turning error of the tips within the
+    // tolerance if the turning rate changes on the shear time,
+    // e_turn ~ h^2 s^2 L/4 <= tol h d s
+    const scalar rc = f.length()/f.minDiameter();
+    return max(r, rc*max(gammaDot, turn)/(4*tolerance_));
+}
+
+
+Foam::scalar Foam::subStepControl::error
+(
+    const fiber& f,
+    const UList<fluidSample>& s,
+    const scalar h
+)
+{
+    scalar gammaDot, speed, dudt;
+    scales(f, s, gammaDot, speed, dudt);
+    const vector& Vn = f.vPrev();
+    const vector& wn = f.omegaPrev();
+    speed = max(speed, mag(Vn));
+    const tensor R(f.R());
+    const scalar halfL = 0.5*f.length();
+    scalar spin =
+        max(gammaDot, max(tipSpeed(f, R, wn), tipSpeed(f, R, f.omega()))/halfL);
+
+    // Path: error of the centre and of the sampling against the distance
+    // travelled; turning: error of the tips in diameters per shear time.
+    // A fiber starting from rest has no speed or turning rate yet: the
+    // scales are at least a tenth of those it gains over its own length
+    // under the present accelerations, sqrt(a L) and sqrt(alpha)
+    const scalar dV = mag(f.velocity() - Vn);
+    const scalar dTip = tipSpeed(f, R, f.omega() - wn);
+    speed = max(speed, 0.1*::sqrt(dV/h*f.length()));
+    spin = max(spin, 0.1*::sqrt(dTip/(h*halfL)));
+    const scalar ePath = 0.5*h*(dV + h*dudt);
+    const scalar eTurn = 0.5*h*dTip;
+    scalar e = 0;
+    if (ePath > 0)
+    {
+        e = ePath/(h*speed);
+    }
+    if (eTurn > 0)
+    {
+        e = max(e, eTurn/(h*spin*f.minDiameter()));
+    }
+    return e;
+}
+
+
+bool Foam::subStepControl::update
+(
+    fiber& f,
+    const UList<fluidSample>& s,
+    const scalar h
+) const
+{
+    if (mode_ != mode::tolerance)
+    {
+        return true;
+    }
+    if (f.jumped())
+    {
+        // A jump of the forcing is no error of the step, and a step that
+        // was rejected once is accepted: keep the proposal
+        f.jumped() = false;
+        return true;
+    }
+    // The error per unit step is O(h)
+    const scalar e = error(f, s, h)/tolerance_;
+    const scalar factor =
+        e*maxGrowth <= safety
+      ? maxGrowth
+      : max(maxShrink, safety/e);
+    f.hNext() = h*factor;
+    if (e > 1)
+    {
+        f.jumped() = true;
+        return false;
+    }
+    return true;
+}
+
+
+void Foam::subStepControl::report(Ostream& os) const
+{
+    os  << "    Sub-steps: ";
+    if (mode_ == mode::paper)
+    {
+        os  << "paper (Eq. 22) with shearStepFactor " << shearStepFactor_;
+    }
+    else
+    {
+        os  << "tolerance " << tolerance_ << " (error per unit step),"
+            << " at most maxRotation " << maxRotation_ << " rad";
+    }
+    os  << ", at most maxCo " << maxCo_ << " cell lengths" << endl;
+}
+
+
+// ************************************************************************* //
