@@ -963,7 +963,8 @@ Foam::fiberCloud::fiberCloud
     const fvMesh& mesh,
     const dictionary& dict,
     const scalar rhoFluid,
-    const vector& g
+    const vector& g,
+    Istream* restart
 )
 :
     mesh_(mesh),
@@ -1048,6 +1049,12 @@ Foam::fiberCloud::fiberCloud
     }
     calcCellLength();
 
+    if (restart)
+    {
+        readRestart(*restart);
+        return;
+    }
+
     const dictionary& injectionDict = dict.subDict("injection");
 
     PtrList<fiber> all;
@@ -1085,6 +1092,111 @@ Foam::fiberCloud::fiberCloud
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+void writeLocation(Ostream& os, const trackedPoint& tp)
+{
+    os  << tp.celli << token::SPACE << tp.tetFacei << token::SPACE
+        << tp.tetPti;
+    for (direction k = 0; k < 4; ++k)
+    {
+        os << token::SPACE << tp.coordinates[k];
+    }
+}
+
+
+void readLocation(Istream& is, trackedPoint& tp)
+{
+    is >> tp.celli >> tp.tetFacei >> tp.tetPti;
+    for (direction k = 0; k < 4; ++k)
+    {
+        is >> tp.coordinates[k];
+    }
+}
+
+} // End anonymous namespace
+
+
+void Foam::fiberCloud::writeRestart(Ostream& os) const
+{
+    os  << "nProcs " << Pstream::nProcs() << " proc " << Pstream::myProcNo()
+        << " cells " << mesh_.nCells() << nl
+        << "nInjected " << nInjected_ << " nEscaped " << nEscaped_
+        << " nDeposited " << nDeposited_ << nl
+        << "nEscapedOutlet " << nEscapedOutlet_ << nl
+        << "nFibers " << fibers_.size() << nl;
+    for (const fiber& f : fibers_)
+    {
+        os << f << nl;
+        writeLocation(os, f.location());
+        for (const trackedPoint& tp : f.segmentLocations())
+        {
+            os << token::SPACE;
+            writeLocation(os, tp);
+        }
+        os << nl;
+    }
+    os.check(FUNCTION_NAME);
+}
+
+
+void Foam::fiberCloud::readRestart(Istream& is)
+{
+    // Written by this decomposition of this mesh?
+    word key;
+    label nProcs, proc, nCells;
+    is >> key >> nProcs >> key >> proc >> key >> nCells;
+    if
+    (
+        nProcs != Pstream::nProcs() || proc != Pstream::myProcNo()
+     || nCells != mesh_.nCells()
+    )
+    {
+        FatalIOErrorInFunction(is)
+            << "The fiber restart file " << is.name() << " was written by"
+            << " processor " << proc << " of " << nProcs << " on a mesh of "
+            << nCells << " cells; this is processor " << Pstream::myProcNo()
+            << " of " << Pstream::nProcs() << " with " << mesh_.nCells()
+            << " cells. Restart with the decomposition the file was written"
+            << " with (docs: restart)" << exit(FatalIOError);
+    }
+    is  >> key >> nInjected_ >> key >> nEscaped_ >> key >> nDeposited_;
+    labelList outlets;
+    is  >> key >> outlets;
+    if (outlets.size() != nEscapedOutlet_.size())
+    {
+        FatalIOErrorInFunction(is)
+            << "The fiber restart file " << is.name() << " counts "
+            << outlets.size() << " outlet patches, the mesh has "
+            << nEscapedOutlet_.size() << exit(FatalIOError);
+    }
+    nEscapedOutlet_ = outlets;
+    label n;
+    is >> key >> n;
+    fibers_.setSize(n);
+    for (label fi = 0; fi < n; ++fi)
+    {
+        fiber* fPtr = new fiber(is);
+        readLocation(is, fPtr->location());
+        for (trackedPoint& tp : fPtr->segmentLocations())
+        {
+            readLocation(is, tp);
+        }
+        fibers_.set(fi, fPtr);
+    }
+    is.check(FUNCTION_NAME);
+    checkLocations();
+
+    Info<< "    Restart: " << returnReduce(n, sumOp<label>())
+        << " fibers read (injected " << nInjected_ << ", escaped "
+        << nEscaped_ << ", deposited " << nDeposited_
+        << "); the injection is not repeated" << endl;
+}
+
 
 void Foam::fiberCloud::evolve(const scalar dt)
 {

@@ -12,6 +12,8 @@ License
 
 #include "fiberTracking.H"
 #include "keywordCheck.H"
+#include "IFstream.H"
+#include "OSspecific.H"
 #include "fvcGrad.H"
 #include "transportModel.H"
 #include "addToRunTimeSelectionTable.H"
@@ -233,6 +235,29 @@ void Foam::functionObjects::fiberTracking::advance(const scalar dt)
             << " (data on the outlet face of a fiber straddling it)";
     }
     Log << endl;
+}
+
+
+Foam::fileName Foam::functionObjects::fiberTracking::restartFile() const
+{
+    return time_.path()/time_.timeName()/"uniform"/"fiberTracking"/name();
+}
+
+
+void Foam::functionObjects::fiberTracking::writeRestart() const
+{
+    const fileName file(restartFile());
+    mkDir(file.path());
+    OFstream os(file);
+    os.precision(17);
+    os  << "fiberTime " << fiberTime_ << nl;
+    cloud_->writeRestart(os);
+    if (!os.good())
+    {
+        FatalErrorInFunction
+            << "Cannot write the fiber restart file " << file
+            << exit(FatalError);
+    }
 }
 
 
@@ -511,7 +536,30 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
         Info<< "    No 'gravity' entry: gravity term left out" << nl;
     }
 
-    cloud_.reset(new fiberCloud(mesh_, dict, rhoInf_, g));
+    // A run started from a time with the fibers' restart file goes on from
+    // it instead of injecting (live runs)
+    const fileName restart(restartFile());
+    const bool here = !functionObject::postProcess && isFile(restart);
+    if (returnReduce(here, orOp<bool>()) != returnReduce(here, andOp<bool>()))
+    {
+        FatalErrorInFunction
+            << "Fiber restart file " << restart.name() << " of time "
+            << time_.timeName() << " present on some processors only"
+            << exit(FatalError);
+    }
+    if (here)
+    {
+        IFstream is(restart);
+        word key;
+        is >> key >> fiberTime_;
+        cloud_.reset(new fiberCloud(mesh_, dict, rhoInf_, g, &is));
+        Info<< "    Restart from " << restart << ", fiber time "
+            << fiberTime_ << nl;
+    }
+    else
+    {
+        cloud_.reset(new fiberCloud(mesh_, dict, rhoInf_, g));
+    }
 
     const fiberHydrodynamics& hydro = cloud_->hydrodynamics();
     if (!hydro.viscous())
@@ -609,6 +657,10 @@ bool Foam::functionObjects::fiberTracking::execute()
         {
             updateFields();
             advance(dt);
+        }
+        if (time_.writeTime())
+        {
+            writeRestart();
         }
         return true;
     }
