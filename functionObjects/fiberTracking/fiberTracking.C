@@ -199,7 +199,11 @@ void Foam::functionObjects::fiberTracking::updateFields()
 }
 
 
-void Foam::functionObjects::fiberTracking::advance(const scalar dt)
+void Foam::functionObjects::fiberTracking::advance
+(
+    const scalar dt,
+    const bool logLine
+)
 {
     const std::clock_t c0 = std::clock();
     cloud_->evolve(dt);
@@ -207,7 +211,15 @@ void Foam::functionObjects::fiberTracking::advance(const scalar dt)
     fiberTime_ += dt;
 
     writeStatistics();
+    if (logLine)
+    {
+        logStep();
+    }
+}
 
+
+void Foam::functionObjects::fiberTracking::logStep() const
+{
     Log << type() << " " << name() << " execute: fiber time " << fiberTime_
         << ", sub-steps " << cloud_->nSubMax()
         << " (smallest " << cloud_->dtSubMin() << " s), fiber CPU time "
@@ -258,6 +270,25 @@ void Foam::functionObjects::fiberTracking::writeRestart() const
             << "Cannot write the fiber restart file " << file
             << exit(FatalError);
     }
+}
+
+
+void Foam::functionObjects::fiberTracking::progress(const bool last)
+{
+    if (!last && cpuFibers_ - cpuProgress_ < 5)
+    {
+        return;
+    }
+    cpuProgress_ = cpuFibers_;
+    logStep();
+    const fiberCloud::statistics s(cloud_->stats());
+    Info<< type() << " " << name() << " progress: fiber time " << fiberTime_
+        << " of " << duration_ << " s ("
+        << label(100*fiberTime_/duration_ + 0.5) << " %), active "
+        << s.nActive << ", escaped " << s.nEscaped << ", deposited "
+        << s.nDeposited << "; " << cpuFibers_ << " s of CPU so far, "
+        << (fiberTime_ > 0 ? cpuFibers_/fiberTime_ : 0)
+        << " s of CPU per second of fiber time" << endl;
 }
 
 
@@ -363,6 +394,7 @@ Foam::functionObjects::fiberTracking::fiberTracking
     outputInterval_(0),
     started_(false),
     cpuFibers_(0),
+    cpuProgress_(0),
     dict_(dict),
     cloud_(),
     gradU_(),
@@ -701,7 +733,8 @@ bool Foam::functionObjects::fiberTracking::execute()
             max(1, label(std::ceil(duration_/outputInterval_*(1 - 1e-9))));
         for (label k = 0; k < nOut; ++k)
         {
-            advance(duration_/nOut);
+            advance(duration_/nOut, false);
+            progress(k + 1 == nOut);
             const List<fiberCloud::state> st(cloud_->gatherStates());
             if (Pstream::master() && stateFilePtr_.valid())
             {
