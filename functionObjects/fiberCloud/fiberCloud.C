@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberCloud.H"
+#include "keywordCheck.H"
 #include "processorPolyPatch.H"
 #include "ListOps.H"
 #include "Switch.H"
@@ -31,24 +32,6 @@ namespace
 {
 
 using namespace Foam;
-
-scalar positiveOrDefault
-(
-    const dictionary& dict,
-    const word& key,
-    const scalar def
-)
-{
-    const scalar v = dict.getOrDefault<scalar>(key, def);
-    if (!(v > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' must be positive, not " << v
-            << exit(FatalIOError);
-    }
-    return v;
-}
-
 
 // inertialDrag: auto (default), on or off (also true/false, yes/no)
 word inertialMode(const dictionary& dict)
@@ -973,9 +956,9 @@ Foam::fiberCloud::fiberCloud
     (
         rhoFluid,
         inertialMode(dict) != "off",
-        positiveOrDefault(dict, "dragCoefficient", 1),
+        keywordCheck::positive(dict, "dragCoefficient", 1),
         inertialMode(dict) == "auto"
-      ? positiveOrDefault(dict, "inertialDragBound", 1e-3)
+      ? keywordCheck::positive(dict, "inertialDragBound", 1e-3)
       : 0,
         dict.getOrDefault<Switch>("viscousDrag", true)
     ),

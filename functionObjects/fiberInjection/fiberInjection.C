@@ -26,14 +26,7 @@ using namespace Foam;
 
 scalar positive(const dictionary& dict, const word& key)
 {
-    const scalar v = dict.get<scalar>(key);
-    if (!(v > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' must be positive, not " << v
-            << exit(FatalIOError);
-    }
-    return v;
+    return keywordCheck::positive(dict, key);
 }
 
 
@@ -52,7 +45,7 @@ vector unitVector(const dictionary& dict, const word& key)
 
 scalar orDefault(const dictionary& dict, const word& key, const scalar def)
 {
-    return dict.found(key) ? positive(dict, key) : def;
+    return keywordCheck::positive(dict, key, def);
 }
 
 

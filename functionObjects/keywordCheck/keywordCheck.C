@@ -87,4 +87,32 @@ Foam::label Foam::keywordCheck::warnUnknown
 }
 
 
+Foam::scalar Foam::keywordCheck::positive
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const scalar v = dict.get<scalar>(key);
+    if (!(v > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' must be positive, not " << v
+            << exit(FatalIOError);
+    }
+    return v;
+}
+
+
+Foam::scalar Foam::keywordCheck::positive
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar def
+)
+{
+    return dict.found(key) ? positive(dict, key) : def;
+}
+
+
 // ************************************************************************* //

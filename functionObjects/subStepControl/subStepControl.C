@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "subStepControl.H"
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * //
 
@@ -22,37 +23,15 @@ Foam::subStepControl::modeNames
 });
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-scalar positive(const dictionary& dict, const word& key, const scalar def)
-{
-    const scalar v = dict.getOrDefault<scalar>(key, def);
-    if (!(v > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' must be positive, not " << v
-            << exit(FatalIOError);
-    }
-    return v;
-}
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::subStepControl::subStepControl(const dictionary& dict)
 :
     mode_(mode::paper),
-    shearStepFactor_(positive(dict, "shearStepFactor", 0.1)),
-    tolerance_(positive(dict, "tolerance", 3e-3)),
-    maxRotation_(positive(dict, "maxRotation", 0.2)),
-    maxCo_(positive(dict, "maxCo", 1))
+    shearStepFactor_(keywordCheck::positive(dict, "shearStepFactor", 0.1)),
+    tolerance_(keywordCheck::positive(dict, "tolerance", 3e-3)),
+    maxRotation_(keywordCheck::positive(dict, "maxRotation", 0.2)),
+    maxCo_(keywordCheck::positive(dict, "maxCo", 1))
 {
     const word m(dict.getOrDefault<word>("subStepControl", "paper"));
     if (!modeNames.found(m))
