@@ -12,6 +12,7 @@ License
 
 #include "fiberCloud.H"
 #include "keywordCheck.H"
+#include "fiberVtkWriter.H"
 #include "processorPolyPatch.H"
 #include "ListOps.H"
 #include "Switch.H"
@@ -1332,6 +1333,70 @@ Foam::List<Foam::fiberCloud::state> Foam::fiberCloud::gatherStates() const
         local[fi] = stateOf(fibers_[fi]);
     }
     return gatherSorted(local);
+}
+
+
+Foam::scalarList Foam::fiberCloud::gatherSegments() const
+{
+    const label m = fiberVtkWriter::recordSize;
+    label n = 0;
+    for (const fiber& f : fibers_)
+    {
+        n += f.nSegments();
+    }
+    List<scalarList> all(Pstream::nProcs());
+    scalarList& rec = all[Pstream::myProcNo()];
+    rec.setSize(m*n);
+    label k = 0;
+    for (const fiber& f : fibers_)
+    {
+        const tensor R(f.R());
+        const vector p(f.orientation());
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            const vector r(f.segmentOffset(R, i));
+            const vector half
+            (
+                (0.5*f.segmentLength(i))*f.segmentDirection(R, i)
+            );
+            const vector v(f.velocity() + (f.omega() ^ r));
+            rec[k++] = f.id();
+            for
+            (
+                const vector& w
+              : {
+                    vector(f.position() + r - half),
+                    vector(f.position() + r + half),
+                    v, f.velocity(), f.omega(), p
+                }
+            )
+            {
+                for (direction c = 0; c < 3; ++c)
+                {
+                    rec[k++] = w[c];
+                }
+            }
+            rec[k++] = f.segmentDiameter(i);
+        }
+    }
+    Pstream::gatherList(all);
+    if (!Pstream::master())
+    {
+        return scalarList();
+    }
+    label nAll = 0;
+    for (const scalarList& r : all)
+    {
+        nAll += r.size();
+    }
+    scalarList out(nAll);
+    nAll = 0;
+    for (const scalarList& r : all)
+    {
+        SubList<scalar>(out, r.size(), nAll) = r;
+        nAll += r.size();
+    }
+    return out;
 }
 
 

@@ -292,6 +292,21 @@ void Foam::functionObjects::fiberTracking::progress(const bool last)
 }
 
 
+void Foam::functionObjects::fiberTracking::writeVtk(const word& tag)
+{
+    // Collective: every processor sends its segments if the master writes
+    if (!returnReduce(vtkWriter_.valid(), orOp<bool>()))
+    {
+        return;
+    }
+    const scalarList records(cloud_->gatherSegments());
+    if (vtkWriter_.valid())
+    {
+        vtkWriter_->write(records, fiberTime_, tag);
+    }
+}
+
+
 void Foam::functionObjects::fiberTracking::writeStatistics()
 {
     const fiberCloud::statistics s(cloud_->stats());
@@ -402,7 +417,8 @@ Foam::functionObjects::fiberTracking::fiberTracking
     epsilonDisk_(),
     stateFilePtr_(),
     depositFilePtr_(),
-    outletFilePtr_()
+    outletFilePtr_(),
+    vtkWriter_()
 {
     read(dict);
 }
@@ -425,6 +441,7 @@ void Foam::functionObjects::fiberTracking::checkKeywords
         "shearStepFactor", "tolerance", "maxRotation", "maxCo",
         "gravity", "jefferyCorrection", "dispersion", "wallInteraction",
         "restitution", "timePerIteration", "duration", "outputInterval",
+        "vtk",
         "injection",
         "functionObjectLibs", "region", "enabled", "log", "timeStart",
         "timeEnd", "executeControl", "executeInterval", "writeControl",
@@ -651,6 +668,14 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
             depositFilePtr_() << endl;
         }
 
+        if (dict.getOrDefault<Switch>("vtk", true))
+        {
+            vtkWriter_.reset
+            (
+                new fiberVtkWriter(baseTimeDir()/"vtk", name())
+            );
+        }
+
         const labelList& outlets = cloud_->outlets();
         if (outlets.size())
         {
@@ -693,6 +718,7 @@ bool Foam::functionObjects::fiberTracking::execute()
         if (time_.writeTime())
         {
             writeRestart();
+            writeVtk(time_.timeName());
         }
         return true;
     }
@@ -740,6 +766,7 @@ bool Foam::functionObjects::fiberTracking::execute()
             {
                 writeStates(st, stateFilePtr_());
             }
+            writeVtk(time_.timeName() + "_" + Foam::name(k + 1));
         }
     }
     else
@@ -753,6 +780,7 @@ bool Foam::functionObjects::fiberTracking::execute()
             {
                 writeStates(st, stateFilePtr_());
             }
+            writeVtk(time_.timeName());
         }
     }
 
