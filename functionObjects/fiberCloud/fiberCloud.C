@@ -581,6 +581,7 @@ void Foam::fiberCloud::centreMoved
         {
             status_[fi] = status::gone;
             ++nEscapedStep_;
+            ++nEscapedSetStep_[setOf(fibers_[fi].id())];
             ++nEscapedOutletStep_
             [
                 outletIndex_[mesh_.boundaryMesh().whichPatch(c.face)]
@@ -937,6 +938,7 @@ void Foam::fiberCloud::deposit(const label fi)
     }
     status_[fi] = status::gone;
     ++nDepositedStep_;
+    ++nDepositedSetStep_[setOf(fibers_[fi].id())];
 }
 
 
@@ -1052,6 +1054,25 @@ Foam::fiberCloud::fiberCloud
     );
     nInjected_ = all.size();
 
+    // The sets, in id order (ids run through the sets in turn)
+    DynamicList<word> names;
+    DynamicList<label> starts;
+    forAll(origins, fi)
+    {
+        if (names.empty() || origins[fi].set != names.last())
+        {
+            names.append(origins[fi].set);
+            starts.append(all[fi].id());
+        }
+    }
+    starts.append(nInjected_);
+    setNames_.transfer(names);
+    setStart_.transfer(starts);
+    nEscapedSet_.setSize(setNames_.size(), 0);
+    nDepositedSet_.setSize(setNames_.size(), 0);
+    nEscapedSetStep_.setSize(setNames_.size(), 0);
+    nDepositedSetStep_.setSize(setNames_.size(), 0);
+
     if (dict.getOrDefault<bool>("jefferyCorrection", false))
     {
         forAll(all, fi)
@@ -1112,6 +1133,9 @@ void Foam::fiberCloud::writeRestart(Ostream& os) const
         << "nInjected " << nInjected_ << " nEscaped " << nEscaped_
         << " nDeposited " << nDeposited_ << nl
         << "nEscapedOutlet " << nEscapedOutlet_ << nl
+        << "sets " << setNames_ << token::SPACE << setStart_
+        << token::SPACE << nEscapedSet_ << token::SPACE << nDepositedSet_
+        << nl
         << "nFibers " << fibers_.size() << nl;
     for (const fiber& f : fibers_)
     {
@@ -1159,6 +1183,9 @@ void Foam::fiberCloud::readRestart(Istream& is)
             << nEscapedOutlet_.size() << exit(FatalIOError);
     }
     nEscapedOutlet_ = outlets;
+    is  >> key >> setNames_ >> setStart_ >> nEscapedSet_ >> nDepositedSet_;
+    nEscapedSetStep_.setSize(setNames_.size(), 0);
+    nDepositedSetStep_.setSize(setNames_.size(), 0);
     label n;
     is >> key >> n;
     fibers_.setSize(n);
@@ -1200,6 +1227,8 @@ void Foam::fiberCloud::evolve(const scalar dt)
     nEscapedStep_ = 0;
     nEscapedOutletStep_ = 0;
     nDepositedStep_ = 0;
+    nEscapedSetStep_ = 0;
+    nDepositedSetStep_ = 0;
     nSentStep_ = 0;
     nOnwardStep_ = 0;
 
@@ -1267,6 +1296,13 @@ void Foam::fiberCloud::evolve(const scalar dt)
         nEscapedOutlet_[i] += nEscapedOutletStep_[i];
     }
     nDeposited_ += returnReduce(nDepositedStep_, sumOp<label>());
+    reduce(nEscapedSetStep_, sumOp<labelList>());
+    reduce(nDepositedSetStep_, sumOp<labelList>());
+    forAll(setNames_, k)
+    {
+        nEscapedSet_[k] += nEscapedSetStep_[k];
+        nDepositedSet_[k] += nDepositedSetStep_[k];
+    }
     nTransferred_ = returnReduce(nSentStep_, sumOp<label>());
     nOnward_ = returnReduce(nOnwardStep_, sumOp<label>());
 
@@ -1333,6 +1369,39 @@ Foam::List<Foam::fiberCloud::state> Foam::fiberCloud::gatherStates() const
         local[fi] = stateOf(fibers_[fi]);
     }
     return gatherSorted(local);
+}
+
+
+Foam::label Foam::fiberCloud::setOf(const label id) const
+{
+    // The last set starting at or before id
+    label k = 0;
+    while (k + 2 < setStart_.size() && setStart_[k + 1] <= id)
+    {
+        ++k;
+    }
+    return k;
+}
+
+
+Foam::List<Foam::FixedList<Foam::label, 4>>
+Foam::fiberCloud::setCounts() const
+{
+    labelList active(setNames_.size(), 0);
+    for (const fiber& f : fibers_)
+    {
+        ++active[setOf(f.id())];
+    }
+    reduce(active, sumOp<labelList>());
+    List<FixedList<label, 4>> c(setNames_.size());
+    forAll(c, k)
+    {
+        c[k][0] = setStart_[k + 1] - setStart_[k];
+        c[k][1] = active[k];
+        c[k][2] = nEscapedSet_[k];
+        c[k][3] = nDepositedSet_[k];
+    }
+    return c;
 }
 
 

@@ -327,6 +327,34 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
         os << endl;
     }
 
+    // Per set, when there are two or more (collective)
+    if (cloud_->setNames().size() > 1)
+    {
+        const List<FixedList<label, 4>> c(cloud_->setCounts());
+        forAll(c, k)
+        {
+            if (c[k][0] != c[k][1] + c[k][2] + c[k][3])
+            {
+                FatalErrorInFunction
+                    << "Fiber count of set " << cloud_->setNames()[k]
+                    << " broken: " << c[k] << exit(FatalError);
+            }
+        }
+        if (Pstream::master() && setFilePtr_.valid())
+        {
+            OFstream& os = setFilePtr_();
+            os  << fiberTime_;
+            for (const FixedList<label, 4>& ck : c)
+            {
+                for (const label n : ck)
+                {
+                    os << tab << n;
+                }
+            }
+            os << endl;
+        }
+    }
+
     if (Pstream::master() && outletFilePtr_.valid())
     {
         OFstream& os = outletFilePtr_();
@@ -418,6 +446,7 @@ Foam::functionObjects::fiberTracking::fiberTracking
     stateFilePtr_(),
     depositFilePtr_(),
     outletFilePtr_(),
+    setFilePtr_(),
     vtkWriter_()
 {
     read(dict);
@@ -674,6 +703,25 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
             (
                 new fiberVtkWriter(baseTimeDir()/"vtk", name())
             );
+        }
+
+        const wordList& sets = cloud_->setNames();
+        if (sets.size() > 1)
+        {
+            setFilePtr_ = createFile("fiberSets");
+            OFstream& os = setFilePtr_();
+            writeHeader(os, "Fibers per set (fiberTracking)");
+            string columns("Time");
+            for (const word& set : sets)
+            {
+                for (const char* c : {"injected", "active", "escaped"})
+                {
+                    columns += " " + set + "_" + c;
+                }
+                columns += " " + set + "_deposited";
+            }
+            writeCommented(os, columns);
+            os << endl;
         }
 
         const labelList& outlets = cloud_->outlets();

@@ -131,15 +131,23 @@ Foam::scalar Foam::subStepControl::rate
     const scalar cellLength
 ) const
 {
+    if (mode_ == mode::paper)
+    {
+        // Eq. 22 and the cell limit: the shear rate and the speeds only
+        scalar gammaDot = 0;
+        scalar speed = mag(f.velocity()) + 0.5*mag(f.omega())*f.length();
+        forAll(s, i)
+        {
+            gammaDot = max(gammaDot, s[i].shearRate());
+            speed = max(speed, mag(s[i].U));
+        }
+        const scalar rc = f.length()/f.minDiameter();
+        return max(rc*gammaDot/shearStepFactor_, speed/(maxCo_*cellLength));
+    }
+
     scalar gammaDot, speed, dudt;
     scales(f, s, gammaDot, speed, dudt);
     const scalar cells = speed/(maxCo_*cellLength);
-
-    if (mode_ == mode::paper)
-    {
-        const scalar rc = f.length()/f.minDiameter();
-        return max(rc*gammaDot/shearStepFactor_, cells);
-    }
 
     // The rotation and the lag of the sampled fluid (see Description)
     const scalar turn = 2*tipSpeed(f, f.R(), f.omega())/f.length();
