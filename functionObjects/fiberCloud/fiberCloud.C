@@ -1050,7 +1050,8 @@ Foam::fiberCloud::fiberCloud
         injectionDict,
         all,
         origins,
-        constraint_.freeDirections()
+        constraint_.freeDirections(),
+        &mesh_
     );
     nInjected_ = all.size();
 

@@ -12,6 +12,8 @@ License
 
 #include "fiberInjection.H"
 #include "keywordCheck.H"
+#include "polyMesh.H"
+#include "Random.H"
 #include "spheroidResistance.H"
 #include "Random.H"
 #include "boundBox.H"
@@ -39,6 +41,27 @@ vector unitVector(const dictionary& dict, const word& key)
             << "Entry '" << key << "' must be a non-zero vector, not " << p
             << exit(FatalIOError);
     }
+    return p/mag(p);
+}
+
+
+//- Uniform on the sphere (in the free directions): normalised Gaussian
+vector randomDirection(Random& rnd, const vector& freeDirections)
+{
+    vector p;
+    do
+    {
+        p = cmptMultiply
+        (
+            freeDirections,
+            vector
+            (
+                rnd.GaussNormal<scalar>(),
+                rnd.GaussNormal<scalar>(),
+                rnd.GaussNormal<scalar>()
+            )
+        );
+    } while (mag(p) < 1e-6);
     return p/mag(p);
 }
 
@@ -75,6 +98,184 @@ struct segmentProps
         fiberInjection::checkSegment(dict, n, l, d, rho);
     }
 };
+
+
+//- Fibers random in a region of the mesh (set types mesh and cellZone):
+//  centres uniform in volume, drawn in the region's bounding box and kept
+//  where the region holds them, so a cell is hit in proportion to its
+//  volume and uniformly inside it; a candidate with a segment (centre or
+//  end) outside the mesh is drawn again (counted).  Every processor draws
+//  the same candidates (one random stream, seed) and the tests are
+//  combined, so the fibers are the same for any decomposition.
+void inRegion
+(
+    const polyMesh& mesh,
+    const dictionary& setDict,
+    const word& setName,
+    const word& setType,
+    const segmentProps& def,
+    const vector& freeDirections,
+    DynamicList<fiber*>& made,
+    DynamicList<fiberInjection::origin>& orig
+)
+{
+    const label nFibers = setDict.get<label>("nFibers");
+    if (nFibers < 1)
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entry 'nFibers' must be at least 1, not " << nFibers
+            << exit(FatalIOError);
+    }
+    const label seed = setDict.getOrDefault<label>("seed", 1);
+    const bool fixedDir = setDict.found("direction");
+    const vector dir
+    (
+        fixedDir ? unitVector(setDict, "direction") : vector(1, 0, 0)
+    );
+
+    // The region's cells and bounding box
+    boolList inside(mesh.nCells(), true);
+    boundBox bb(mesh.bounds());
+    if (setType == "cellZone")
+    {
+        const word zone(setDict.get<word>("cellZone"));
+        const label zoneI = mesh.cellZones().findZoneID(zone);
+        if (zoneI < 0)
+        {
+            FatalIOErrorInFunction(setDict)
+                << "Entry 'cellZone': no cell zone '" << zone
+                << "' in the mesh; zones: " << mesh.cellZones().names()
+                << exit(FatalIOError);
+        }
+        inside = false;
+        bb = boundBox::invertedBox;
+        for (const label celli : mesh.cellZones()[zoneI])
+        {
+            inside[celli] = true;
+            for (const label pointi : mesh.cellPoints()[celli])
+            {
+                bb.add(mesh.points()[pointi]);
+            }
+        }
+        reduce(bb.min(), minOp<point>());
+        reduce(bb.max(), maxOp<point>());
+        if (bb.empty())
+        {
+            FatalIOErrorInFunction(setDict)
+                << "Entry 'cellZone': cell zone '" << zone << "' is empty"
+                << exit(FatalIOError);
+        }
+    }
+
+    // Candidates in batches; all segment centres must be in the mesh
+    Random rnd(seed);
+    const label batch = 256;
+    const label maxCandidates = 1000*nFibers + 100000;
+    label nCandidates = 0, nRedrawn = 0, k = 0;
+    List<point> pts;
+    while (k < nFibers)
+    {
+        if (nCandidates >= maxCandidates)
+        {
+            FatalIOErrorInFunction(setDict)
+                << "Fiber set '" << setName << "': " << k << " of "
+                << nFibers << " fibers placed after " << nCandidates
+                << " candidates (" << nRedrawn << " with a segment outside"
+                << " the mesh): the region cannot hold fibers of length "
+                << def.n*def.l << " m" << exit(FatalIOError);
+        }
+        // Per candidate: the centre in the region, then the centre and
+        // both ends of every segment in the mesh
+        const label m = 1 + 3*def.n;
+        PtrList<fiber> cand(batch);
+        labelList ok(batch*m, 0);
+        forAll(cand, j)
+        {
+            point c;
+            for (direction cmpt = 0; cmpt < 3; ++cmpt)
+            {
+                c[cmpt] = bb.min()[cmpt]
+                  + rnd.sample01<scalar>()*(bb.max()[cmpt] - bb.min()[cmpt]);
+            }
+            // In a 2-D case on the mid-plane of the constrained directions
+            for (direction cmpt = 0; cmpt < 3; ++cmpt)
+            {
+                if (freeDirections[cmpt] < 0.5)
+                {
+                    c[cmpt] = 0.5*(bb.min()[cmpt] + bb.max()[cmpt]);
+                }
+            }
+            const vector p
+            (
+                fixedDir ? dir : randomDirection(rnd, freeDirections)
+            );
+            cand.set
+            (
+                j,
+                new fiber(fiber::straight(0, c, p, def.n, def.l, def.d,
+                    def.rho))
+            );
+            const label celli = mesh.findCell(c);
+            ok[j*m] = (celli >= 0 && inside[celli]);
+            const fiber& f = cand[j];
+            const tensor R(f.R());
+            f.segmentCentres(pts);
+            forAll(pts, i)
+            {
+                const vector half
+                (
+                    (0.5*f.segmentLength(i))*f.segmentDirection(R, i)
+                );
+                const point ends[3] = {pts[i], pts[i] - half, pts[i] + half};
+                for (label q = 0; q < 3; ++q)
+                {
+                    ok[j*m + 1 + 3*i + q] = (mesh.findCell(ends[q]) >= 0);
+                }
+            }
+        }
+        Pstream::listCombineGather(ok, maxEqOp<label>());
+        Pstream::listCombineScatter(ok);
+        forAll(cand, j)
+        {
+            if (k == nFibers)
+            {
+                break;
+            }
+            ++nCandidates;
+            if (!ok[j*m])
+            {
+                continue;
+            }
+            bool all = true;
+            for (label i = 1; i < m; ++i)
+            {
+                all = all && ok[j*m + i];
+            }
+            if (!all)
+            {
+                ++nRedrawn;
+                continue;
+            }
+            const fiber& f = cand[j];
+            made.append
+            (
+                new fiber
+                (
+                    fiber::straight
+                    (
+                        made.size(), f.position(), f.orientation(), def.n,
+                        def.l, def.d, def.rho
+                    )
+                )
+            );
+            orig.append(fiberInjection::origin{setName, k});
+            ++k;
+        }
+    }
+    Info<< "    Fiber set '" << setName << "' (" << setType << "): "
+        << nFibers << " fibers from " << nCandidates << " candidates, "
+        << nRedrawn << " drawn again (a segment outside the mesh)" << endl;
+}
 
 } // End anonymous namespace
 
@@ -121,7 +322,8 @@ void Foam::fiberInjection::read
     const dictionary& dict,
     PtrList<fiber>& fibers,
     List<origin>& origins,
-    const vector& freeDirections
+    const vector& freeDirections,
+    const polyMesh* mesh
 )
 {
     DynamicList<origin> orig;
@@ -164,6 +366,14 @@ void Foam::fiberInjection::read
         else if (setType == "line")
         {
             known.append(wordList({"nFibers", "start", "end", "direction"}));
+        }
+        else if (setType == "mesh" || setType == "cellZone")
+        {
+            known.append(wordList({"nFibers", "seed", "direction"}));
+            if (setType == "cellZone")
+            {
+                known.append("cellZone");
+            }
         }
         keywordCheck::warnUnknown
         (
@@ -249,25 +459,10 @@ void Foam::fiberInjection::read
                       + rnd.sample01<scalar>()*(bb.max()[cmpt]
                       - bb.min()[cmpt]);
                 }
-                vector p(dir);
-                if (!fixedDir)
-                {
-                    // Uniform on the sphere: normalised Gaussian vector
-                    do
-                    {
-                        p = cmptMultiply
-                        (
-                            freeDirections,
-                            vector
-                            (
-                                rnd.GaussNormal<scalar>(),
-                                rnd.GaussNormal<scalar>(),
-                                rnd.GaussNormal<scalar>()
-                            )
-                        );
-                    } while (mag(p) < 1e-6);
-                    p /= mag(p);
-                }
+                const vector p
+                (
+                    fixedDir ? dir : randomDirection(rnd, freeDirections)
+                );
                 made.append
                 (
                     new fiber
@@ -310,11 +505,26 @@ void Foam::fiberInjection::read
                 orig.append(origin{setName, k});
             }
         }
+        else if (setType == "mesh" || setType == "cellZone")
+        {
+            if (!mesh)
+            {
+                FatalIOErrorInFunction(setDict)
+                    << "Set type '" << setType << "' needs the mesh"
+                    << exit(FatalIOError);
+            }
+            inRegion
+            (
+                *mesh, setDict, setName, setType, def, freeDirections,
+                made, orig
+            );
+        }
         else
         {
             FatalIOErrorInFunction(setDict)
                 << "Unknown fiber set type '" << setType
-                << "' in entry 'type'; valid types: (list line randomBox)"
+                << "' in entry 'type'; valid types:"
+                << " (list line randomBox mesh cellZone)"
                 << exit(FatalIOError);
         }
     }
