@@ -77,6 +77,7 @@ Foam::fiber::fiber
 )
 :
     id_(id),
+    setIndex_(0),
     s0_(centres),
     z0_(directions),
     l_(lengths),

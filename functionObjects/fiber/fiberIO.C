@@ -18,6 +18,7 @@ License
 Foam::fiber::fiber(Istream& is)
 :
     id_(readLabel(is)),
+    setIndex_(readLabel(is)),
     s0_(is),
     z0_(is),
     l_(is),
@@ -55,6 +56,7 @@ Foam::fiber::fiber(Istream& is)
 Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
 {
     os  << f.id_ << token::SPACE
+        << f.setIndex_ << token::SPACE
         << f.s0_ << token::SPACE
         << f.z0_ << token::SPACE
         << f.l_ << token::SPACE

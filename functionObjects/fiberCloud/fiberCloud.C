@@ -17,6 +17,8 @@ License
 #include "ListOps.H"
 #include "Switch.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::Enum<Foam::fiberCloud::wallRule>
@@ -581,11 +583,10 @@ void Foam::fiberCloud::centreMoved
         {
             status_[fi] = status::gone;
             ++nEscapedStep_;
-            ++nEscapedSetStep_[setOf(fibers_[fi].id())];
-            ++nEscapedOutletStep_
-            [
-                outletIndex_[mesh_.boundaryMesh().whichPatch(c.face)]
-            ];
+            const label patchi = mesh_.boundaryMesh().whichPatch(c.face);
+            ++nEscapedSetStep_[fibers_[fi].setIndex()];
+            ++nEscapedOutletStep_[outletIndex_[patchi]];
+            recordEvent(fibers_[fi], tEnd_, eventKind::escaped, patchi);
             break;
         }
     }
@@ -938,7 +939,135 @@ void Foam::fiberCloud::deposit(const label fi)
     }
     status_[fi] = status::gone;
     ++nDepositedStep_;
-    ++nDepositedSetStep_[setOf(fibers_[fi].id())];
+    ++nDepositedSetStep_[fibers_[fi].setIndex()];
+    recordEvent(fibers_[fi], tEnd_, eventKind::deposited, -1);
+}
+
+
+void Foam::fiberCloud::recordEvent
+(
+    const fiber& f,
+    const scalar t,
+    const eventKind kind,
+    const label patchi
+)
+{
+    if (!logEvents_)
+    {
+        return;
+    }
+    const vector p(f.orientation());
+    for
+    (
+        const scalar v
+      : {
+            t, scalar(f.id()), scalar(f.setIndex()), scalar(kind),
+            scalar(patchi), scalar(f.nSegments()), f.length(),
+            f.segmentDiameter(0), f.position().x(), f.position().y(),
+            f.position().z(), p.x(), p.y(), p.z()
+        }
+    )
+    {
+        events_.append(v);
+    }
+}
+
+
+void Foam::fiberCloud::release
+(
+    const scalar t0,
+    const scalar t1,
+    DynamicList<scalar>& tLeft
+)
+{
+    const label myProc = Pstream::myProcNo();
+    for (fiberPatchInjection& feed : feeds_)
+    {
+        const label nNew = feed.nDue(t1) - feed.nReleased();
+        if (nNew <= 0)
+        {
+            continue;
+        }
+
+        // Candidates in rounds until nNew lie in the mesh; every
+        // processor draws the same and the location is combined
+        label nAccepted = 0, nRedrawn = 0;
+        const label maxCandidates = 1000*nNew + 10000;
+        while (nAccepted < nNew)
+        {
+            if (nAccepted + nRedrawn > maxCandidates)
+            {
+                FatalErrorInFunction
+                    << "Fiber set '" << feed.name() << "': " << nAccepted
+                    << " of " << nNew << " fibers placed after "
+                    << nAccepted + nRedrawn << " candidates: no place"
+                    << " just inside patch '"
+                    << mesh_.boundaryMesh()[feed.patch()].name()
+                    << "' holds the whole fiber (every segment in the"
+                    << " mesh). Use shorter fibers or another patch"
+                    << exit(FatalError);
+            }
+            const label nTry = nNew - nAccepted;
+            PtrList<fiber> cand(nTry);
+            labelList offset(nTry + 1, 0);
+            forAll(cand, j)
+            {
+                cand.set(j, new fiber(feed.candidate(-1)));
+                offset[j + 1] = offset[j] + cand[j].nSegments();
+            }
+            labelList owner(nTry, Pstream::nProcs());
+            labelList segFound(offset.last(), 0);
+            List<trackedPoint> centre(nTry);
+            locateInjected(cand, offset, owner, segFound, centre);
+
+            forAll(cand, j)
+            {
+                bool inside = owner[j] < Pstream::nProcs();
+                for (label i = offset[j]; i < offset[j + 1]; ++i)
+                {
+                    inside = inside && segFound[i];
+                }
+                if (!inside)
+                {
+                    ++nRedrawn;
+                    continue;
+                }
+
+                // Fiber k of the set: the next id, its release time
+                const label k = feed.nReleased() + nAccepted;
+                const scalar tRel = max(feed.releaseTime(k), t0);
+                ++nAccepted;
+                const label id = nInjected_++;
+                ++nInjectedSet_[feed.setIndex()];
+                if (owner[j] != myProc)
+                {
+                    continue;
+                }
+                fiber* fPtr = cand.set(j, nullptr).ptr();
+                fPtr->setId(id);
+                fiber& f = *fPtr;
+                if (jeffery_)
+                {
+                    f.jefferyCorrection();
+                }
+                f.location() = centre[j];
+                if (feed.velocity())
+                {
+                    f.setVelocity(constraint_.constrain(*feed.velocity()));
+                }
+                else
+                {
+                    fluidSample s;
+                    sampler_.interpolate(f.location(), s);
+                    f.setVelocity(constraint_.constrain(s.U));
+                }
+                recordEvent(f, tRel, eventKind::injected, feed.patch());
+                fibers_.append(fPtr);
+                tLeft.append(max(t1 - tRel, scalar(0)));
+            }
+        }
+        feed.released(nNew, nRedrawn);
+    }
 }
 
 
@@ -955,6 +1084,8 @@ Foam::fiberCloud::fiberCloud
 :
     mesh_(mesh),
     fibers_(),
+    feeds_(),
+    jeffery_(dict.getOrDefault<bool>("jefferyCorrection", false)),
     hydro_
     (
         rhoFluid,
@@ -984,6 +1115,11 @@ Foam::fiberCloud::fiberCloud
     nEscapedOutlet_(outlets_.size(), 0),
     nEscapedOutletStep_(outlets_.size(), 0),
     deposits_(),
+    logEvents_(false),
+    events_(),
+    logInitial_(false),
+    tEnd_(0),
+    restarted_(restart != nullptr),
     nSubMax_(0),
     dtSubMin_(0),
     nRemote_(0),
@@ -1035,12 +1171,6 @@ Foam::fiberCloud::fiberCloud
     }
     calcCellLength();
 
-    if (restart)
-    {
-        readRestart(*restart);
-        return;
-    }
-
     const dictionary& injectionDict = dict.subDict("injection");
 
     PtrList<fiber> all;
@@ -1050,31 +1180,31 @@ Foam::fiberCloud::fiberCloud
         injectionDict,
         all,
         origins,
+        setNames_,
+        feeds_,
         constraint_.freeDirections(),
-        &mesh_
+        &mesh_,
+        restart != nullptr
     );
-    nInjected_ = all.size();
-
-    // The sets, in id order (ids run through the sets in turn)
-    DynamicList<word> names;
-    DynamicList<label> starts;
-    forAll(origins, fi)
-    {
-        if (names.empty() || origins[fi].set != names.last())
-        {
-            names.append(origins[fi].set);
-            starts.append(all[fi].id());
-        }
-    }
-    starts.append(nInjected_);
-    setNames_.transfer(names);
-    setStart_.transfer(starts);
     nEscapedSet_.setSize(setNames_.size(), 0);
     nDepositedSet_.setSize(setNames_.size(), 0);
     nEscapedSetStep_.setSize(setNames_.size(), 0);
     nDepositedSetStep_.setSize(setNames_.size(), 0);
 
-    if (dict.getOrDefault<bool>("jefferyCorrection", false))
+    if (restart)
+    {
+        readRestart(*restart);
+        return;
+    }
+
+    nInjected_ = all.size();
+    nInjectedSet_.setSize(setNames_.size(), 0);
+    for (const fiber& f : all)
+    {
+        ++nInjectedSet_[f.setIndex()];
+    }
+
+    if (jeffery_)
     {
         forAll(all, fi)
         {
@@ -1087,8 +1217,12 @@ Foam::fiberCloud::fiberCloud
             }
         }
         Info<< "    Jeffery correction: segment tumbling resistance and"
-            << " strain coupling scaled by " << all[0].alpha()
-            << " (fiber 0)" << endl;
+            << " strain coupling scaled";
+        if (all.size())
+        {
+            Info<< " by " << all[0].alpha() << " (fiber 0)";
+        }
+        Info<< endl;
     }
 
     distribute(injectionDict, all, origins);
@@ -1134,9 +1268,16 @@ void Foam::fiberCloud::writeRestart(Ostream& os) const
         << "nInjected " << nInjected_ << " nEscaped " << nEscaped_
         << " nDeposited " << nDeposited_ << nl
         << "nEscapedOutlet " << nEscapedOutlet_ << nl
-        << "sets " << setNames_ << token::SPACE << setStart_
+        << "sets " << setNames_ << token::SPACE << nInjectedSet_
         << token::SPACE << nEscapedSet_ << token::SPACE << nDepositedSet_
         << nl
+        << "feeds " << feeds_.size();
+    for (const fiberPatchInjection& feed : feeds_)
+    {
+        os << token::SPACE;
+        feed.writeRestart(os);
+    }
+    os  << nl
         << "nFibers " << fibers_.size() << nl;
     for (const fiber& f : fibers_)
     {
@@ -1184,9 +1325,24 @@ void Foam::fiberCloud::readRestart(Istream& is)
             << nEscapedOutlet_.size() << exit(FatalIOError);
     }
     nEscapedOutlet_ = outlets;
-    is  >> key >> setNames_ >> setStart_ >> nEscapedSet_ >> nDepositedSet_;
-    nEscapedSetStep_.setSize(setNames_.size(), 0);
-    nDepositedSetStep_.setSize(setNames_.size(), 0);
+    const wordList names(setNames_);
+    is  >> key >> setNames_ >> nInjectedSet_ >> nEscapedSet_
+        >> nDepositedSet_;
+    label nFeeds;
+    is  >> key >> nFeeds;
+    if (setNames_ != names || nFeeds != feeds_.size())
+    {
+        FatalIOErrorInFunction(is)
+            << "The fiber restart file " << is.name() << " has the fiber"
+            << " sets " << setNames_ << " (" << nFeeds << " fed through"
+            << " patches); the dictionary has " << names << " ("
+            << feeds_.size() << "). Restart with the sets of the run that"
+            << " wrote it" << exit(FatalIOError);
+    }
+    for (fiberPatchInjection& feed : feeds_)
+    {
+        feed.readRestart(is);
+    }
     label n;
     is >> key >> n;
     fibers_.setSize(n);
@@ -1210,13 +1366,41 @@ void Foam::fiberCloud::readRestart(Istream& is)
 }
 
 
-void Foam::fiberCloud::evolve(const scalar dt)
+void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
 {
+    tEnd_ = t0 + dt;
+    sampler_.resetCounters();
+
+    if (logInitial_)
+    {
+        for (const fiber& f : fibers_)
+        {
+            recordEvent(f, t0, eventKind::injected, -1);
+        }
+        logInitial_ = false;
+    }
+
+    // The feeds' fibers due in this step, with the time each has left
+    const label nOld = fibers_.size();
+    DynamicList<scalar> tLeftNew;
+    if (feeds_.size() && dt > 0)
+    {
+        release(t0, tEnd_, tLeftNew);
+    }
+
     const label nF = fibers_.size();
     status_.setSize(nF);
     status_ = (dt > 0 ? status::running : status::done);
     tLeft_.setSize(nF);
     tLeft_ = dt;
+    forAll(tLeftNew, j)
+    {
+        tLeft_[nOld + j] = tLeftNew[j];
+        if (!(tLeftNew[j] > 0))
+        {
+            status_[nOld + j] = status::done;
+        }
+    }
     nSub_.setSize(nF);
     nSub_ = 0;
     toProc_.setSize(nF);
@@ -1233,7 +1417,6 @@ void Foam::fiberCloud::evolve(const scalar dt)
     nSentStep_ = 0;
     nOnwardStep_ = 0;
 
-    sampler_.resetCounters();
     hydro_.resetCounters();
     dtSubMin_ = dt;
 
@@ -1373,31 +1556,19 @@ Foam::List<Foam::fiberCloud::state> Foam::fiberCloud::gatherStates() const
 }
 
 
-Foam::label Foam::fiberCloud::setOf(const label id) const
-{
-    // The last set starting at or before id
-    label k = 0;
-    while (k + 2 < setStart_.size() && setStart_[k + 1] <= id)
-    {
-        ++k;
-    }
-    return k;
-}
-
-
 Foam::List<Foam::FixedList<Foam::label, 4>>
 Foam::fiberCloud::setCounts() const
 {
     labelList active(setNames_.size(), 0);
     for (const fiber& f : fibers_)
     {
-        ++active[setOf(f.id())];
+        ++active[f.setIndex()];
     }
     reduce(active, sumOp<labelList>());
     List<FixedList<label, 4>> c(setNames_.size());
     forAll(c, k)
     {
-        c[k][0] = setStart_[k + 1] - setStart_[k];
+        c[k][0] = nInjectedSet_[k];
         c[k][1] = active[k];
         c[k][2] = nEscapedSet_[k];
         c[k][3] = nDepositedSet_[k];
@@ -1465,6 +1636,48 @@ Foam::scalarList Foam::fiberCloud::gatherSegments() const
     {
         SubList<scalar>(out, r.size(), nAll) = r;
         nAll += r.size();
+    }
+    return out;
+}
+
+
+Foam::scalarList Foam::fiberCloud::gatherEvents()
+{
+    List<scalarList> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = events_;
+    events_.clear();
+    Pstream::gatherList(all);
+    if (!Pstream::master())
+    {
+        return scalarList();
+    }
+
+    // By time, then id
+    DynamicList<scalar> flat;
+    for (const scalarList& r : all)
+    {
+        flat.append(r);
+    }
+    const label m = eventSize;
+    const label n = flat.size()/m;
+    labelList order(identity(n));
+    std::sort
+    (
+        order.begin(),
+        order.end(),
+        [&flat, m](const label a, const label b)
+        {
+            if (flat[m*a] != flat[m*b]) return flat[m*a] < flat[m*b];
+            return flat[m*a + 1] < flat[m*b + 1];
+        }
+    );
+    scalarList out(flat.size());
+    forAll(order, k)
+    {
+        for (label i = 0; i < m; ++i)
+        {
+            out[m*k + i] = flat[m*order[k] + i];
+        }
     }
     return out;
 }

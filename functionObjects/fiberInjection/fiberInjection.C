@@ -14,8 +14,6 @@ License
 #include "keywordCheck.H"
 #include "polyMesh.H"
 #include "Random.H"
-#include "spheroidResistance.H"
-#include "Random.H"
 #include "boundBox.H"
 #include "mathematicalConstants.H"
 
@@ -25,12 +23,6 @@ namespace
 {
 
 using namespace Foam;
-
-scalar positive(const dictionary& dict, const word& key)
-{
-    return keywordCheck::positive(dict, key);
-}
-
 
 vector unitVector(const dictionary& dict, const word& key)
 {
@@ -72,32 +64,21 @@ scalar orDefault(const dictionary& dict, const word& key, const scalar def)
 }
 
 
-struct segmentProps
+//- A straight fiber of the size s in set setIndex
+fiber* makeFiber
+(
+    const label id,
+    const point& c,
+    const vector& p,
+    const fiberSizes::size& s,
+    const scalar rho,
+    const label setIndex
+)
 {
-    label n;
-    scalar l, d, rho;
-
-    segmentProps(const dictionary& dict)
-    :
-        n(dict.get<label>("nSegments")),
-        l(positive(dict, "segmentLength")),
-        d(positive(dict, "diameter")),
-        rho(positive(dict, "density"))
-    {
-        fiberInjection::checkSegment(dict, n, l, d, rho);
-    }
-
-    // Overrides of a list entry
-    segmentProps(const dictionary& dict, const segmentProps& def)
-    :
-        n(dict.getOrDefault<label>("nSegments", def.n)),
-        l(orDefault(dict, "segmentLength", def.l)),
-        d(orDefault(dict, "diameter", def.d)),
-        rho(orDefault(dict, "density", def.rho))
-    {
-        fiberInjection::checkSegment(dict, n, l, d, rho);
-    }
-};
+    fiber* f = new fiber(fiber::straight(id, c, p, s.n, s.l, s.d, rho));
+    f->setIndex(setIndex);
+    return f;
+}
 
 
 //- Fibers random in a region of the mesh (set types mesh and cellZone):
@@ -113,7 +94,8 @@ void inRegion
     const dictionary& setDict,
     const word& setName,
     const word& setType,
-    const segmentProps& def,
+    const label setIndex,
+    const fiberSizes& sizes,
     const vector& freeDirections,
     DynamicList<fiber*>& made,
     DynamicList<fiberInjection::origin>& orig
@@ -182,12 +164,19 @@ void inRegion
                 << nFibers << " fibers placed after " << nCandidates
                 << " candidates (" << nRedrawn << " with a segment outside"
                 << " the mesh): the region cannot hold fibers of length "
-                << def.n*def.l << " m" << exit(FatalIOError);
+                << sizes.maxFiberLength() << " m" << exit(FatalIOError);
         }
         // Per candidate: the centre in the region, then the centre and
-        // both ends of every segment in the mesh
-        const label m = 1 + 3*def.n;
+        // both ends of every segment in the mesh (up to the most segments
+        // a fiber can have)
         PtrList<fiber> cand(batch);
+        List<fiberSizes::size> sz(batch);
+        label m = 1;
+        forAll(sz, j)
+        {
+            sz[j] = sizes.draw(seed, nCandidates + j);
+            m = max(m, 1 + 3*sz[j].n);
+        }
         labelList ok(batch*m, 0);
         forAll(cand, j)
         {
@@ -212,8 +201,7 @@ void inRegion
             cand.set
             (
                 j,
-                new fiber(fiber::straight(0, c, p, def.n, def.l, def.d,
-                    def.rho))
+                makeFiber(0, c, p, sz[j], sizes.density(), setIndex)
             );
             const label celli = mesh.findCell(c);
             ok[j*m] = (celli >= 0 && inside[celli]);
@@ -247,7 +235,7 @@ void inRegion
                 continue;
             }
             bool all = true;
-            for (label i = 1; i < m; ++i)
+            for (label i = 1; i < 1 + 3*sz[j].n; ++i)
             {
                 all = all && ok[j*m + i];
             }
@@ -259,13 +247,10 @@ void inRegion
             const fiber& f = cand[j];
             made.append
             (
-                new fiber
+                makeFiber
                 (
-                    fiber::straight
-                    (
-                        made.size(), f.position(), f.orientation(), def.n,
-                        def.l, def.d, def.rho
-                    )
+                    made.size(), f.position(), f.orientation(), sz[j],
+                    sizes.density(), setIndex
                 )
             );
             orig.append(fiberInjection::origin{setName, k});
@@ -282,52 +267,22 @@ void inRegion
 
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
 
-void Foam::fiberInjection::checkSegment
-(
-    const dictionary& dict,
-    const label nSegments,
-    const scalar l,
-    const scalar d,
-    const scalar
-)
-{
-    if (nSegments < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'nSegments' must be at least 1, not " << nSegments
-            << exit(FatalIOError);
-    }
-
-    const scalar rc = l/d;
-    if (rc < spheroidResistance::rcMin)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Segment aspect ratio segmentLength/diameter = " << rc
-            << " is below " << spheroidResistance::rcMin << "." << nl
-            << "    Cox's equivalent aspect ratio (Eq. 8) is a slender-body"
-            << " fit: it exceeds l/d below 4.65 and" << nl
-            << "    is not monotonic below 1.65, so the segment drag would"
-            << " be meaningless." << nl
-            << "    Use fewer, longer segments (reduce 'nSegments' and raise"
-            << " 'segmentLength') so that" << nl
-            << "    segmentLength >= " << spheroidResistance::rcMin
-            << "*diameter = " << spheroidResistance::rcMin*d
-            << exit(FatalIOError);
-    }
-}
-
-
 void Foam::fiberInjection::read
 (
     const dictionary& dict,
     PtrList<fiber>& fibers,
     List<origin>& origins,
+    wordList& setNames,
+    PtrList<fiberPatchInjection>& feeds,
     const vector& freeDirections,
-    const polyMesh* mesh
+    const polyMesh* mesh,
+    const bool feedsOnly
 )
 {
     DynamicList<origin> orig;
     DynamicList<fiber*> made;
+    DynamicList<word> names;
+    DynamicList<fiberPatchInjection*> fed;
 
     if (dict.empty())
     {
@@ -349,11 +304,13 @@ void Foam::fiberInjection::read
         const dictionary& setDict = e.dict();
         const word setName(e.keyword());
         const word setType(setDict.get<word>("type"));
-        const segmentProps def(setDict);
+        const label setIndex = names.size();
+        names.append(setName);
 
         wordList known
         ({
-            "type", "nSegments", "segmentLength", "diameter", "density"
+            "type", "nSegments", "segmentLength", "diameter", "density",
+            "seed"
         });
         if (setType == "list")
         {
@@ -361,7 +318,7 @@ void Foam::fiberInjection::read
         }
         else if (setType == "randomBox")
         {
-            known.append(wordList({"nFibers", "box", "seed", "direction"}));
+            known.append(wordList({"nFibers", "box", "direction"}));
         }
         else if (setType == "line")
         {
@@ -369,11 +326,30 @@ void Foam::fiberInjection::read
         }
         else if (setType == "mesh" || setType == "cellZone")
         {
-            known.append(wordList({"nFibers", "seed", "direction"}));
+            known.append(wordList({"nFibers", "direction"}));
             if (setType == "cellZone")
             {
                 known.append("cellZone");
             }
+        }
+        else if (setType == "patch")
+        {
+            known.append
+            (
+                wordList
+                ({
+                    "patch", "start", "duration", "fibersPerSecond",
+                    "direction", "velocity"
+                })
+            );
+        }
+        else
+        {
+            FatalIOErrorInFunction(setDict)
+                << "Unknown fiber set type '" << setType
+                << "' in entry 'type'; valid types:"
+                << " (list line randomBox mesh cellZone patch)"
+                << exit(FatalIOError);
         }
         keywordCheck::warnUnknown
         (
@@ -381,6 +357,38 @@ void Foam::fiberInjection::read
             known,
             "fiber set '" + setName + "' (type " + setType + ")"
         );
+
+        if (setType == "patch")
+        {
+            if (!mesh)
+            {
+                FatalIOErrorInFunction(setDict)
+                    << "Set type 'patch' needs the mesh"
+                    << exit(FatalIOError);
+            }
+            fed.append
+            (
+                new fiberPatchInjection
+                (
+                    *mesh, setDict, setName, setIndex, freeDirections
+                )
+            );
+            continue;
+        }
+
+        if (feedsOnly)
+        {
+            continue;
+        }
+
+        const fiberSizes sizes(setDict);
+        const label seed = setDict.getOrDefault<label>("seed", 1);
+        if (seed < 0)
+        {
+            FatalIOErrorInFunction(setDict)
+                << "Entry 'seed' must be at least 0, not " << seed
+                << exit(FatalIOError);
+        }
 
         if (setType == "list")
         {
@@ -408,18 +416,21 @@ void Foam::fiberInjection::read
                     }),
                     "fiber " + Foam::name(k) + " of set '" + setName + "'"
                 );
-                const segmentProps sp(fd, def);
+                // The set's size, a value of the entry overriding it
+                fiberSizes::size sz(sizes.draw(seed, k));
+                sz.n = fd.getOrDefault<label>("nSegments", sz.n);
+                sz.l = orDefault(fd, "segmentLength", sz.l);
+                sz.d = orDefault(fd, "diameter", sz.d);
+                const scalar rho = orDefault(fd, "density", sizes.density());
+                fiberSizes::checkSize(fd, sz);
                 made.append
                 (
-                    new fiber
+                    makeFiber
                     (
-                        fiber::straight
-                        (
-                            made.size(),
-                            fd.get<point>("centre"),
-                            unitVector(fd, "direction"),
-                            sp.n, sp.l, sp.d, sp.rho
-                        )
+                        made.size(),
+                        fd.get<point>("centre"),
+                        unitVector(fd, "direction"),
+                        sz, rho, setIndex
                     )
                 );
                 orig.append(origin{setName, k});
@@ -442,7 +453,6 @@ void Foam::fiberInjection::read
                     << "Entry 'box' must be (min max) with min <= max, not "
                     << corners << exit(FatalIOError);
             }
-            const label seed = setDict.getOrDefault<label>("seed", 1);
             const bool fixedDir = setDict.found("direction");
             const vector dir
             (
@@ -465,12 +475,10 @@ void Foam::fiberInjection::read
                 );
                 made.append
                 (
-                    new fiber
+                    makeFiber
                     (
-                        fiber::straight
-                        (
-                            made.size(), c, p, def.n, def.l, def.d, def.rho
-                        )
+                        made.size(), c, p, sizes.draw(seed, k),
+                        sizes.density(), setIndex
                     )
                 );
                 orig.append(origin{setName, k});
@@ -493,19 +501,16 @@ void Foam::fiberInjection::read
                 const scalar w = nFibers > 1 ? scalar(k)/(nFibers - 1) : 0.5;
                 made.append
                 (
-                    new fiber
+                    makeFiber
                     (
-                        fiber::straight
-                        (
-                            made.size(), a + w*(b - a), dir,
-                            def.n, def.l, def.d, def.rho
-                        )
+                        made.size(), a + w*(b - a), dir, sizes.draw(seed, k),
+                        sizes.density(), setIndex
                     )
                 );
                 orig.append(origin{setName, k});
             }
         }
-        else if (setType == "mesh" || setType == "cellZone")
+        else
         {
             if (!mesh)
             {
@@ -515,17 +520,9 @@ void Foam::fiberInjection::read
             }
             inRegion
             (
-                *mesh, setDict, setName, setType, def, freeDirections,
-                made, orig
+                *mesh, setDict, setName, setType, setIndex, sizes,
+                freeDirections, made, orig
             );
-        }
-        else
-        {
-            FatalIOErrorInFunction(setDict)
-                << "Unknown fiber set type '" << setType
-                << "' in entry 'type'; valid types:"
-                << " (list line randomBox mesh cellZone)"
-                << exit(FatalIOError);
         }
     }
 
@@ -535,6 +532,12 @@ void Foam::fiberInjection::read
         fibers.set(i, made[i]);
     }
     origins.transfer(orig);
+    setNames.transfer(names);
+    feeds.setSize(fed.size());
+    forAll(fed, i)
+    {
+        feeds.set(i, fed[i]);
+    }
 }
 
 

@@ -206,7 +206,7 @@ void Foam::functionObjects::fiberTracking::advance
 )
 {
     const std::clock_t c0 = std::clock();
-    cloud_->evolve(dt);
+    cloud_->evolve(fiberTime_, dt);
     cpuFibers_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
     fiberTime_ += dt;
 
@@ -389,6 +389,43 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
             writeStates(dep, depositFilePtr_());
         }
     }
+
+    // Events since the last call
+    if (cloud_->loggingEvents())
+    {
+        const scalarList ev(cloud_->gatherEvents());
+        if (Pstream::master() && eventFilePtr_.valid())
+        {
+            writeEvents(ev, eventFilePtr_());
+        }
+    }
+}
+
+
+void Foam::functionObjects::fiberTracking::writeEvents
+(
+    const scalarList& ev,
+    OFstream& os
+) const
+{
+    static const char* kinds[3] = {"injected", "escaped", "deposited"};
+    const label m = fiberCloud::eventSize;
+    const wordList& sets = cloud_->setNames();
+    for (label k = 0; k < ev.size()/m; ++k)
+    {
+        const scalar* e = &ev[m*k];
+        const label patchi = label(e[4]);
+        os  << e[0] << tab << label(e[1]) << tab << sets[label(e[2])]
+            << tab << kinds[label(e[3])] << tab
+            << (patchi >= 0 ? mesh_.boundaryMesh()[patchi].name() : "-")
+            << tab << label(e[5]);
+        for (label i = 6; i < m; ++i)
+        {
+            os << tab << e[i];
+        }
+        os << nl;
+    }
+    os.flush();
 }
 
 
@@ -470,7 +507,7 @@ void Foam::functionObjects::fiberTracking::checkKeywords
         "shearStepFactor", "tolerance", "maxRotation", "maxCo",
         "gravity", "jefferyCorrection", "dispersion", "wallInteraction",
         "restitution", "timePerIteration", "duration", "outputInterval",
-        "vtk",
+        "vtk", "eventLog",
         "injection",
         "functionObjectLibs", "region", "enabled", "log", "timeStart",
         "timeEnd", "executeControl", "executeInterval", "writeControl",
@@ -639,6 +676,12 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
         cloud_.reset(new fiberCloud(mesh_, dict, rhoInf_, g));
     }
 
+    const bool eventLog = dict.getOrDefault<Switch>("eventLog", false);
+    if (eventLog)
+    {
+        cloud_->logEvents();
+    }
+
     const fiberHydrodynamics& hydro = cloud_->hydrodynamics();
     if (!hydro.viscous())
     {
@@ -721,6 +764,24 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
                 columns += " " + set + "_deposited";
             }
             writeCommented(os, columns);
+            os << endl;
+        }
+
+        if (eventLog)
+        {
+            eventFilePtr_ = createFile("fiberEvents");
+            OFstream& os = eventFilePtr_();
+            writeHeader
+            (
+                os,
+                "Fibers injected, escaped, deposited (fiberTracking)"
+            );
+            writeCommented
+            (
+                os,
+                "Time id set event patch nSegments length diameter cx cy cz"
+                " px py pz"
+            );
             os << endl;
         }
 

@@ -27,6 +27,8 @@ Description
 #include "fiberIntegrator.H"
 #include "fiberDispersion.H"
 #include "GosmanIoannides.H"
+#include "counterRandom.H"
+#include "fiberSizes.H"
 #include "fiberTracker.H"
 #include "subStepControl.H"
 #include "mathematicalConstants.H"
@@ -839,8 +841,9 @@ void testGosmanIoannides()
 
     // Same seed, same eddies; another seed, other eddies
     {
-        const vector a(GI::gaussian(3, 17, 5)), b(GI::gaussian(3, 17, 5));
-        const vector c(GI::gaussian(4, 17, 5));
+        typedef counterRandom CR;
+        const vector a(CR::gaussian(3, 17, 5)), b(CR::gaussian(3, 17, 5));
+        const vector c(CR::gaussian(4, 17, 5));
         check
         (
             "dispersion.reproducibleSeed",
@@ -1687,6 +1690,169 @@ void testStepControl()
 
 
 
+
+// * * * * * * * * * * * * * * * Size distributions  * * * * * * * * * * * //
+
+//- A distribution entry: type and its coefficients
+dictionary distributionDict(const word& type, const dictionary& coeffs)
+{
+    dictionary d;
+    d.add("type", type);
+    d.add(word(type + "Distribution"), coeffs);
+    return d;
+}
+
+
+dictionary rangeDict(const scalar lo, const scalar hi)
+{
+    dictionary c;
+    c.add("minValue", lo);
+    c.add("maxValue", hi);
+    return c;
+}
+
+
+//- Sample mean and variance of n draws of entry i (0: nSegments, 1:
+//  segmentLength, 2: diameter) against the distribution's (4 standard
+//  errors; se of the variance from the fourth central moment mu4)
+void checkMoments
+(
+    const std::string& name,
+    const fiberSizes& sizes,
+    const label i,
+    const label n,
+    const scalar mean,
+    const scalar var,
+    const scalar mu4
+)
+{
+    scalar s = 0, s2 = 0;
+    List<scalar> x(n);
+    for (label k = 0; k < n; ++k)
+    {
+        const fiberSizes::size sz(sizes.draw(7, k));
+        x[k] = (i == 0 ? scalar(sz.n) : i == 1 ? sz.l : sz.d);
+        s += x[k];
+    }
+    const scalar m = s/n;
+    for (const scalar xi : x)
+    {
+        s2 += sqr(xi - m);
+    }
+    const scalar v = s2/(n - 1);
+    const scalar seMean = std::sqrt(var/n);
+    const scalar seVar = std::sqrt((mu4 - sqr(var))/n);
+    std::ostringstream os;
+    os.precision(6);
+    os  << n << " draws: mean " << m << " against " << mean << " ("
+        << (m - mean)/seMean << " se), variance " << v << " against " << var
+        << " (" << (v - var)/seVar << " se)";
+    check
+    (
+        name,
+        mag(m - mean) < 4*seMean && mag(v - var) < 4*seVar,
+        os.str()
+    );
+}
+
+
+void testSizes()
+{
+    const label n = 40000;
+
+    // Uniform lengths on [a, b]: mean (a+b)/2, variance w^2/12, mu4 w^4/80
+    {
+        const scalar a = 1e-4, b = 3e-4, w = b - a;
+        dictionary d;
+        d.add("nSegments", 2);
+        d.add("segmentLength", distributionDict("uniform", rangeDict(a, b)));
+        d.add("diameter", 2e-5);
+        d.add("density", 1000);
+        const fiberSizes sizes(d);
+        checkMoments
+        (
+            "sizes.uniformLength", sizes, 1, n, 0.5*(a + b), sqr(w)/12,
+            pow4(w)/80
+        );
+        const fiberSizes::size s1(sizes.draw(3, 11)), s2(sizes.draw(3, 11));
+        const fiberSizes::size s3(sizes.draw(3, 12));
+        check
+        (
+            "sizes.sameSeedSameFiber",
+            s1.l == s2.l && s1.l != s3.l && s1.n == 2 && s1.d == 2e-5,
+            "draw (seed 3, fiber 11) twice equal, fiber 12 differs"
+        );
+    }
+
+    // OpenFOAM v1912's normal: 'variance' is sqrt(2) sigma; truncated to
+    // [min, max] = mu -+ 2 sigma here.  Truncated normal moments, with
+    // alpha = -2, beta = 2, Z = Phi(2) - Phi(-2):
+    //   mean mu, variance sigma^2 (1 - 2 beta phi(beta)/Z),
+    //   mu4 sigma^4 (3 - (2 beta^3 + 6 beta) phi(beta)/Z)
+    {
+        const scalar mu = 2e-5, sigma = 2e-6;
+        dictionary c(rangeDict(mu - 2*sigma, mu + 2*sigma));
+        c.add("expectation", mu);
+        c.add("variance", std::sqrt(2.0)*sigma);
+        dictionary d;
+        d.add("nSegments", 1);
+        d.add("segmentLength", 2e-4);
+        d.add("diameter", distributionDict("normal", c));
+        d.add("density", 1000);
+        const fiberSizes sizes(d);
+        const scalar beta = 2;
+        const scalar phi = std::exp(-0.5*sqr(beta))/std::sqrt(twoPi);
+        const scalar Z = std::erf(beta/std::sqrt(2.0));
+        checkMoments
+        (
+            "sizes.normalDiameter", sizes, 2, n, mu,
+            sqr(sigma)*(1 - 2*beta*phi/Z),
+            pow4(sigma)*(3 - (2*pow3(beta) + 6*beta)*phi/Z)
+        );
+    }
+
+    // nSegments uniform on [0.5, 5.5), rounded: 1..5 equally likely,
+    // mean 3, variance 2, mu4 (1/5) sum (k - 3)^4 = 6.8
+    {
+        dictionary d;
+        d.add("nSegments", distributionDict("uniform", rangeDict(0.5, 5.5)));
+        d.add("segmentLength", 2e-4);
+        d.add("diameter", 2e-5);
+        d.add("density", 1000);
+        const fiberSizes sizes(d);
+        checkMoments("sizes.roundedSegments", sizes, 0, n, 3, 2, 6.8);
+    }
+
+    // A distribution that can give a segment of l/d < 3 is refused
+    {
+        dictionary d;
+        d.add("nSegments", 1);
+        d.add
+        (
+            "segmentLength",
+            distributionDict("uniform", rangeDict(5e-5, 3e-4))
+        );
+        d.add("diameter", 2e-5);
+        d.add("density", 1000);
+        std::string msg("no error");
+        try
+        {
+            const fiberSizes sizes(d);
+        }
+        catch (const Foam::IOerror& err)
+        {
+            msg = err.message();
+        }
+        check
+        (
+            "sizes.refusedAspectRatio",
+            msg.find("min(segmentLength)/max(diameter)") != std::string::npos,
+            msg.substr(0, 80)
+        );
+    }
+}
+
+
 int main()
 {
     FatalError.throwExceptions();
@@ -1709,6 +1875,7 @@ int main()
         testJefferyAndRigidity();
         testPeriodicTransform();
         testStepControl();
+        testSizes();
     }
     catch (const Foam::error& err)
     {

@@ -15,8 +15,9 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include "keywordCheck.H"
 
+#include "counterRandom.H"
+
 #include <cmath>
-#include <cstdint>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -28,24 +29,6 @@ namespace fiberDispersions
     addToRunTimeSelectionTable(fiberDispersion, GosmanIoannides, dictionary);
 }
 }
-
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-// SplitMix64 finaliser (a bijective 64-bit mixing function)
-inline std::uint64_t mix64(std::uint64_t z)
-{
-    z = (z ^ (z >> 30))*UINT64_C(0xBF58476D1CE4E5B9);
-    z = (z ^ (z >> 27))*UINT64_C(0x94D049BB133111EB);
-    return z ^ (z >> 31);
-}
-
-const std::uint64_t golden = UINT64_C(0x9E3779B97F4A7C15);
-
-} // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -87,39 +70,6 @@ Foam::fiberDispersions::GosmanIoannides::GosmanIoannides
 
 
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
-
-Foam::scalar Foam::fiberDispersions::GosmanIoannides::uniform
-(
-    const label seed,
-    const label id,
-    const label j
-)
-{
-    const std::uint64_t stream =
-        mix64(std::uint64_t(seed)*golden ^ mix64(std::uint64_t(id) + 1));
-    const std::uint64_t z = mix64(stream + (std::uint64_t(j) + 1)*golden);
-
-    // 53 random bits, shifted off 0 and 1
-    return (double(z >> 11) + 0.5)*(1.0/9007199254740992.0);
-}
-
-
-Foam::vector Foam::fiberDispersions::GosmanIoannides::gaussian
-(
-    const label seed,
-    const label id,
-    const label draw
-)
-{
-    const label j = 4*draw;
-    const scalar r1 = std::sqrt(-2*std::log(uniform(seed, id, j)));
-    const scalar a1 = constant::mathematical::twoPi*uniform(seed, id, j + 1);
-    const scalar r2 = std::sqrt(-2*std::log(uniform(seed, id, j + 2)));
-    const scalar a2 = constant::mathematical::twoPi*uniform(seed, id, j + 3);
-
-    return vector(r1*std::cos(a1), r1*std::sin(a1), r2*std::cos(a2));
-}
-
 
 Foam::scalar Foam::fiberDispersions::GosmanIoannides::eddyLifetime
 (
@@ -173,7 +123,7 @@ Foam::scalar Foam::fiberDispersions::GosmanIoannides::correct
 
     if (newEddy)
     {
-        f.psi() = gaussian(seed_, f.id(), f.nDraws());
+        f.psi() = counterRandom::gaussian(seed_, f.id(), f.nDraws());
         ++f.nDraws();
         f.jumped() = true;
     }

@@ -1,0 +1,291 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fiberPatchInjection.H"
+#include "counterRandom.H"
+#include "keywordCheck.H"
+#include "Pstream.H"
+#include "SubField.H"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fiberPatchInjection::gatherPatch(const polyMesh& mesh)
+{
+    // Triangles about the face centres, with the face normal
+    const polyPatch& pp = mesh.boundaryMesh()[patchi_];
+    const pointField& pts = mesh.points();
+    DynamicList<FixedList<point, 3>> myTri;
+    DynamicList<vector> myN;
+    forAll(pp, i)
+    {
+        const face& f = pp[i];
+        const point& c = pp.faceCentres()[i];
+        const vector n(pp.faceAreas()[i]/mag(pp.faceAreas()[i]));
+        forAll(f, k)
+        {
+            myTri.append
+            (
+                FixedList<point, 3>({c, pts[f[k]], pts[f.nextLabel(k)]})
+            );
+            myN.append(n);
+        }
+    }
+
+    List<List<FixedList<point, 3>>> allTri(Pstream::nProcs());
+    List<vectorList> allN(Pstream::nProcs());
+    allTri[Pstream::myProcNo()] = myTri;
+    allN[Pstream::myProcNo()] = myN;
+    Pstream::gatherList(allTri);
+    Pstream::scatterList(allTri);
+    Pstream::gatherList(allN);
+    Pstream::scatterList(allN);
+
+    label n = 0;
+    for (const List<FixedList<point, 3>>& t : allTri)
+    {
+        n += t.size();
+    }
+    List<FixedList<point, 3>> tri(n);
+    vectorList nrm(n);
+    List<point> centroid(n);
+    n = 0;
+    forAll(allTri, proci)
+    {
+        forAll(allTri[proci], i)
+        {
+            const FixedList<point, 3>& t = allTri[proci][i];
+            tri[n] = t;
+            nrm[n] = allN[proci][i];
+            centroid[n] = (t[0] + t[1] + t[2])/3;
+            ++n;
+        }
+    }
+
+    // A decomposition-independent order: by centroid, x then y then z
+    labelList order(identity(n));
+    std::sort
+    (
+        order.begin(),
+        order.end(),
+        [&centroid](const label a, const label b)
+        {
+            const point& pa = centroid[a];
+            const point& pb = centroid[b];
+            if (pa.x() != pb.x()) return pa.x() < pb.x();
+            if (pa.y() != pb.y()) return pa.y() < pb.y();
+            return pa.z() < pb.z();
+        }
+    );
+
+    tri_.setSize(n);
+    normal_.setSize(n);
+    cdf_.setSize(n);
+    scalar sum = 0;
+    forAll(order, i)
+    {
+        const FixedList<point, 3>& t = tri[order[i]];
+        tri_[i] = t;
+        normal_[i] = nrm[order[i]];
+        sum += 0.5*mag((t[1] - t[0]) ^ (t[2] - t[0]));
+        cdf_[i] = sum;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fiberPatchInjection::fiberPatchInjection
+(
+    const polyMesh& mesh,
+    const dictionary& setDict,
+    const word& setName,
+    const label setIndex,
+    const vector& freeDirections
+)
+:
+    name_(setName),
+    setIndex_(setIndex),
+    patchi_(-1),
+    start_(setDict.get<scalar>("start")),
+    duration_(keywordCheck::positive(setDict, "duration")),
+    rate_(keywordCheck::positive(setDict, "fibersPerSecond")),
+    seed_(setDict.getOrDefault<label>("seed", 1)),
+    fixedDir_(setDict.found("direction")),
+    dir_(1, 0, 0),
+    fixedU_(setDict.found("velocity")),
+    U0_(setDict.getOrDefault<vector>("velocity", Zero)),
+    free_(freeDirections),
+    sizes_(setDict),
+    nReleased_(0),
+    nCandidates_(0),
+    nRedrawn_(0)
+{
+    const word patchName(setDict.get<word>("patch"));
+    patchi_ = mesh.boundaryMesh().findPatchID(patchName);
+    if (patchi_ < 0)
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entry 'patch': no patch '" << patchName << "' in the mesh;"
+            << " patches: " << mesh.boundaryMesh().names()
+            << exit(FatalIOError);
+    }
+    const polyPatch& pp = mesh.boundaryMesh()[patchi_];
+    if (polyPatch::constraintType(pp.type()))
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entry 'patch': patch '" << patchName << "' is of type "
+            << pp.type() << "; fibers are fed through a physical patch"
+            << " (an inlet, a wall), not a coupled, empty, wedge or"
+            << " symmetry patch" << exit(FatalIOError);
+    }
+    if (start_ < 0)
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entry 'start' must be at least 0, not " << start_
+            << exit(FatalIOError);
+    }
+    if (seed_ < 0)
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entry 'seed' must be at least 0, not " << seed_
+            << exit(FatalIOError);
+    }
+    if (rate_*duration_ > labelMax/2)
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entries 'fibersPerSecond' and 'duration' ask for "
+            << rate_*duration_ << " fibers, more than this build's labels"
+            << " can count (" << labelMax/2 << ")" << exit(FatalIOError);
+    }
+    if (fixedDir_)
+    {
+        dir_ = setDict.get<vector>("direction");
+        if (!(mag(dir_) > 0))
+        {
+            FatalIOErrorInFunction(setDict)
+                << "Entry 'direction' must be a non-zero vector, not "
+                << dir_ << exit(FatalIOError);
+        }
+        dir_ /= mag(dir_);
+        if (mag(dir_ - cmptMultiply(free_, dir_)) > 1e-9)
+        {
+            FatalIOErrorInFunction(setDict)
+                << "Entry 'direction' " << dir_ << " is not in the"
+                << " solution plane of this 2-D case (free directions "
+                << free_ << ")" << exit(FatalIOError);
+        }
+    }
+
+    gatherPatch(mesh);
+    if (cdf_.empty() || !(cdf_.last() > 0))
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entry 'patch': patch '" << patchName << "' has no faces"
+            << exit(FatalIOError);
+    }
+
+    Info<< "    Fiber set '" << name_ << "' (patch): " << rate_
+        << " fibers/s through '" << patchName << "' (" << tri_.size()
+        << " triangles, area " << cdf_.last() << " m2) from " << start_
+        << " s for " << duration_ << " s";
+    if (sizes_.distributed())
+    {
+        Info<< ", sizes drawn per fiber";
+    }
+    Info<< endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::fiberPatchInjection::nDue(const scalar t) const
+{
+    const scalar span = min(t, start_ + duration_) - start_;
+    if (span <= 0)
+    {
+        return 0;
+    }
+    return label(std::floor(rate_*span + 1e-9));
+}
+
+
+Foam::scalar Foam::fiberPatchInjection::releaseTime(const label k) const
+{
+    return start_ + (k + 1)/rate_;
+}
+
+
+Foam::fiber Foam::fiberPatchInjection::candidate(const label id)
+{
+    const label k = nCandidates_++;
+    const fiberSizes::size s(sizes_.draw(seed_, k));
+
+    // A triangle by area, a point uniform in it
+    const scalar u = counterRandom::uniform(seed_, k, 0)*cdf_.last();
+    const label t = min
+    (
+        label(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()),
+        cdf_.size() - 1
+    );
+    scalar a = counterRandom::uniform(seed_, k, 1);
+    scalar b = counterRandom::uniform(seed_, k, 2);
+    if (a + b > 1)
+    {
+        a = 1 - a;
+        b = 1 - b;
+    }
+    const FixedList<point, 3>& T = tri_[t];
+    const point onPatch(T[0] + a*(T[1] - T[0]) + b*(T[2] - T[0]));
+
+    // Orientation: given, or uniform in the free directions
+    vector p(dir_);
+    if (!fixedDir_)
+    {
+        for (label draw = 1; ; ++draw)
+        {
+            p = cmptMultiply(free_, counterRandom::gaussian(seed_, k, draw));
+            if (mag(p) > 1e-6)
+            {
+                break;
+            }
+        }
+        p /= mag(p);
+    }
+
+    // Just inside: half the extent along the normal and a margin
+    const scalar L = s.n*s.l;
+    const vector& n = normal_[t];
+    const point c(onPatch - (0.5*L*mag(p & n) + 1e-3*L)*n);
+
+    fiber f(fiber::straight(id, c, p, s.n, s.l, s.d, sizes_.density()));
+    f.setIndex(setIndex_);
+    return f;
+}
+
+
+void Foam::fiberPatchInjection::writeRestart(Ostream& os) const
+{
+    os  << nReleased_ << token::SPACE << nCandidates_ << token::SPACE
+        << nRedrawn_;
+}
+
+
+void Foam::fiberPatchInjection::readRestart(Istream& is)
+{
+    is >> nReleased_ >> nCandidates_ >> nRedrawn_;
+}
+
+
+// ************************************************************************* //
