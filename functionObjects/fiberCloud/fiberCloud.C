@@ -983,46 +983,54 @@ void Foam::fiberCloud::release
     const label myProc = Pstream::myProcNo();
     for (fiberPatchInjection& feed : feeds_)
     {
-        const label nNew = feed.nDue(t1) - feed.nReleased();
+        const label k0 = feed.nReleased();
+        const label nNew = feed.nDue(t1) - k0;
         if (nNew <= 0)
         {
             continue;
         }
 
-        // Candidates in rounds until nNew lie in the mesh; every
-        // processor draws the same and the location is combined
-        label nAccepted = 0, nRedrawn = 0;
-        const label maxCandidates = 1000*nNew + 10000;
-        while (nAccepted < nNew)
+        // Fiber k0 + j keeps its size; its place is drawn again until the
+        // whole fiber lies in the mesh (so the sizes released follow the
+        // distribution).  Every processor draws the same candidates and
+        // the location is combined.
+        PtrList<fiber> placed(nNew);
+        labelList owner(nNew, Pstream::nProcs());
+        List<trackedPoint> centre(nNew);
+        labelList pending(identity(nNew));
+        label nRedrawn = 0;
+        const label maxRedrawn = 1000*nNew + 10000;
+        while (pending.size())
         {
-            if (nAccepted + nRedrawn > maxCandidates)
+            if (nRedrawn > maxRedrawn)
             {
                 FatalErrorInFunction
-                    << "Fiber set '" << feed.name() << "': " << nAccepted
-                    << " of " << nNew << " fibers placed after "
-                    << nAccepted + nRedrawn << " candidates: no place"
-                    << " just inside patch '"
+                    << "Fiber set '" << feed.name() << "': "
+                    << nNew - pending.size() << " of " << nNew
+                    << " fibers placed after " << nRedrawn << " candidates"
+                    << " with a segment outside the mesh: no place just"
+                    << " inside patch '"
                     << mesh_.boundaryMesh()[feed.patch()].name()
-                    << "' holds the whole fiber (every segment in the"
-                    << " mesh). Use shorter fibers or another patch"
-                    << exit(FatalError);
+                    << "' holds the whole fiber. Use shorter fibers or"
+                    << " another patch" << exit(FatalError);
             }
-            const label nTry = nNew - nAccepted;
+            const label nTry = pending.size();
             PtrList<fiber> cand(nTry);
             labelList offset(nTry + 1, 0);
             forAll(cand, j)
             {
-                cand.set(j, new fiber(feed.candidate(-1)));
+                cand.set(j, new fiber(feed.candidate(-1, k0 + pending[j])));
                 offset[j + 1] = offset[j] + cand[j].nSegments();
             }
-            labelList owner(nTry, Pstream::nProcs());
+            labelList candOwner(nTry, Pstream::nProcs());
             labelList segFound(offset.last(), 0);
-            List<trackedPoint> centre(nTry);
-            locateInjected(cand, offset, owner, segFound, centre);
+            List<trackedPoint> candCentre(nTry);
+            locateInjected(cand, offset, candOwner, segFound, candCentre);
 
+            DynamicList<label> still;
             forAll(cand, j)
             {
-                bool inside = owner[j] < Pstream::nProcs();
+                bool inside = candOwner[j] < Pstream::nProcs();
                 for (label i = offset[j]; i < offset[j + 1]; ++i)
                 {
                     inside = inside && segFound[i];
@@ -1030,41 +1038,48 @@ void Foam::fiberCloud::release
                 if (!inside)
                 {
                     ++nRedrawn;
+                    still.append(pending[j]);
                     continue;
                 }
-
-                // Fiber k of the set: the next id, its release time
-                const label k = feed.nReleased() + nAccepted;
-                const scalar tRel = max(feed.releaseTime(k), t0);
-                ++nAccepted;
-                const label id = nInjected_++;
-                ++nInjectedSet_[feed.setIndex()];
-                if (owner[j] != myProc)
-                {
-                    continue;
-                }
-                fiber* fPtr = cand.set(j, nullptr).ptr();
-                fPtr->setId(id);
-                fiber& f = *fPtr;
-                if (jeffery_)
-                {
-                    f.jefferyCorrection();
-                }
-                f.location() = centre[j];
-                if (feed.velocity())
-                {
-                    f.setVelocity(constraint_.constrain(*feed.velocity()));
-                }
-                else
-                {
-                    fluidSample s;
-                    sampler_.interpolate(f.location(), s);
-                    f.setVelocity(constraint_.constrain(s.U));
-                }
-                recordEvent(f, tRel, eventKind::injected, feed.patch());
-                fibers_.append(fPtr);
-                tLeft.append(max(t1 - tRel, scalar(0)));
+                const label slot = pending[j];
+                owner[slot] = candOwner[j];
+                centre[slot] = candCentre[j];
+                placed.set(slot, cand.set(j, nullptr));
             }
+            pending.transfer(still);
+        }
+
+        // In release order: the next ids, the release times
+        forAll(placed, slot)
+        {
+            const scalar tRel = max(feed.releaseTime(k0 + slot), t0);
+            const label id = nInjected_++;
+            ++nInjectedSet_[feed.setIndex()];
+            if (owner[slot] != myProc)
+            {
+                continue;
+            }
+            fiber* fPtr = placed.set(slot, nullptr).ptr();
+            fPtr->setId(id);
+            fiber& f = *fPtr;
+            if (jeffery_)
+            {
+                f.jefferyCorrection();
+            }
+            f.location() = centre[slot];
+            if (feed.velocity())
+            {
+                f.setVelocity(constraint_.constrain(*feed.velocity()));
+            }
+            else
+            {
+                fluidSample s;
+                sampler_.interpolate(f.location(), s);
+                f.setVelocity(constraint_.constrain(s.U));
+            }
+            recordEvent(f, tRel, eventKind::injected, feed.patch());
+            fibers_.append(fPtr);
+            tLeft.append(max(t1 - tRel, scalar(0)));
         }
         feed.released(nNew, nRedrawn);
     }

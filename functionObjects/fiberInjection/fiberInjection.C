@@ -149,35 +149,50 @@ void inRegion
         }
     }
 
-    // Candidates in batches; all segment centres must be in the mesh
+    // Candidates in batches; all segment centres must be in the mesh.
+    // Fiber k keeps its size (stream k): a candidate that does not fit is
+    // placed again with the same size in a later batch, so that the sizes
+    // follow the distribution
     Random rnd(seed);
     const label batch = 256;
     const label maxCandidates = 1000*nFibers + 100000;
-    label nCandidates = 0, nRedrawn = 0, k = 0;
+    label nCandidates = 0, nRedrawn = 0, nPlaced = 0, nextSlot = 0;
+    PtrList<fiber> placed(nFibers);
+    DynamicList<label> retry;
     List<point> pts;
-    while (k < nFibers)
+    while (nPlaced < nFibers)
     {
         if (nCandidates >= maxCandidates)
         {
             FatalIOErrorInFunction(setDict)
-                << "Fiber set '" << setName << "': " << k << " of "
+                << "Fiber set '" << setName << "': " << nPlaced << " of "
                 << nFibers << " fibers placed after " << nCandidates
                 << " candidates (" << nRedrawn << " with a segment outside"
                 << " the mesh): the region cannot hold fibers of length "
                 << sizes.maxFiberLength() << " m" << exit(FatalIOError);
         }
+
+        // The fibers of this batch: those to place again, then new ones
+        DynamicList<label> slots(retry);
+        retry.clear();
+        while (slots.size() < batch && nextSlot < nFibers)
+        {
+            slots.append(nextSlot++);
+        }
+        const label nb = slots.size();
+
         // Per candidate: the centre in the region, then the centre and
         // both ends of every segment in the mesh (up to the most segments
-        // a fiber can have)
-        PtrList<fiber> cand(batch);
-        List<fiberSizes::size> sz(batch);
+        // a fiber of the batch has)
+        PtrList<fiber> cand(nb);
+        List<fiberSizes::size> sz(nb);
         label m = 1;
         forAll(sz, j)
         {
-            sz[j] = sizes.draw(seed, nCandidates + j);
+            sz[j] = sizes.draw(seed, slots[j]);
             m = max(m, 1 + 3*sz[j].n);
         }
-        labelList ok(batch*m, 0);
+        labelList ok(nb*m, 0);
         forAll(cand, j)
         {
             point c;
@@ -225,37 +240,31 @@ void inRegion
         Pstream::listCombineScatter(ok);
         forAll(cand, j)
         {
-            if (k == nFibers)
-            {
-                break;
-            }
             ++nCandidates;
-            if (!ok[j*m])
+            bool all = ok[j*m];
+            for (label i = 1; all && i < 1 + 3*sz[j].n; ++i)
             {
-                continue;
-            }
-            bool all = true;
-            for (label i = 1; i < 1 + 3*sz[j].n; ++i)
-            {
-                all = all && ok[j*m + i];
+                all = ok[j*m + i];
             }
             if (!all)
             {
-                ++nRedrawn;
+                if (ok[j*m])
+                {
+                    ++nRedrawn;
+                }
+                retry.append(slots[j]);
                 continue;
             }
-            const fiber& f = cand[j];
-            made.append
-            (
-                makeFiber
-                (
-                    made.size(), f.position(), f.orientation(), sz[j],
-                    sizes.density(), setIndex
-                )
-            );
-            orig.append(fiberInjection::origin{setName, k});
-            ++k;
+            placed.set(slots[j], cand.set(j, nullptr));
+            ++nPlaced;
         }
+    }
+    forAll(placed, k)
+    {
+        fiber* f = placed.set(k, nullptr).ptr();
+        f->setId(made.size());
+        made.append(f);
+        orig.append(fiberInjection::origin{setName, k});
     }
     Info<< "    Fiber set '" << setName << "' (" << setType << "): "
         << nFibers << " fibers from " << nCandidates << " candidates, "

@@ -227,10 +227,15 @@ Foam::scalar Foam::fiberPatchInjection::releaseTime(const label k) const
 }
 
 
-Foam::fiber Foam::fiberPatchInjection::candidate(const label id)
+Foam::fiber Foam::fiberPatchInjection::candidate
+(
+    const label id,
+    const label kFiber
+)
 {
+    // The size: of fiber kFiber; the place: candidate draw k
+    const fiberSizes::size s(sizes_.draw(seed_, kFiber));
     const label k = nCandidates_++;
-    const fiberSizes::size s(sizes_.draw(seed_, k));
 
     // A triangle by area, a point uniform in it
     const scalar u = counterRandom::uniform(seed_, k, 0)*cdf_.last();

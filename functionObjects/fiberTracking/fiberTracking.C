@@ -241,6 +241,11 @@ void Foam::functionObjects::fiberTracking::logStep() const
             << cloud_->nInertial() + cloud_->nInertialSkipped()
             << " segment steps";
     }
+    for (const fiberPatchInjection& feed : cloud_->feeds())
+    {
+        Log << ", set " << feed.name() << " released " << feed.nReleased()
+            << " (" << feed.nRedrawn() << " candidates placed again)";
+    }
     if (cloud_->nOutside())
     {
         Log << ", segment samples outside the mesh " << cloud_->nOutside()

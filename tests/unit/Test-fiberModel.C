@@ -29,6 +29,7 @@ Description
 #include "GosmanIoannides.H"
 #include "counterRandom.H"
 #include "fiberSizes.H"
+#include "Tuple2.H"
 #include "fiberTracker.H"
 #include "subStepControl.H"
 #include "mathematicalConstants.H"
@@ -1808,6 +1809,30 @@ void testSizes()
             "sizes.normalDiameter", sizes, 2, n, mu,
             sqr(sigma)*(1 - 2*beta*phi/Z),
             pow4(sigma)*(3 - (2*pow3(beta) + 6*beta)*phi/Z)
+        );
+    }
+
+    // A table (general): triangular pdf on [a, b] = c -+ h, mode c:
+    // mean c, variance h^2/6, mu4 h^4/15
+    {
+        const scalar c = 2e-4, h = 1e-4;
+        List<Tuple2<scalar, scalar>> table
+        ({
+            Tuple2<scalar, scalar>(c - h, 0),
+            Tuple2<scalar, scalar>(c, 1),
+            Tuple2<scalar, scalar>(c + h, 0)
+        });
+        dictionary coeffs;
+        coeffs.add("distribution", table);
+        dictionary d;
+        d.add("nSegments", 1);
+        d.add("segmentLength", distributionDict("general", coeffs));
+        d.add("diameter", 2e-5);
+        d.add("density", 1000);
+        const fiberSizes sizes(d);
+        checkMoments
+        (
+            "sizes.tableLength", sizes, 1, n, c, sqr(h)/6, pow4(h)/15
         );
     }
 
