@@ -510,7 +510,15 @@ void Foam::fiberCloud::finish
     const point x0(f.position());
     const fiber::motion m0(f.saveMotion());
 
-    integrator_->advance(f, s, hydro_, g_, h);
+    // Gravity, less buoyancy if asked for (segments of one density)
+    const vector g
+    (
+        buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_
+    );
+    integrator_->advance
+    (
+        f, s, hydro_, g, h, coupling_.valid() ? &forces_ : nullptr
+    );
     constraint_.constrain(f);
     if (!control_.update(f, s, h))
     {
@@ -518,6 +526,13 @@ void Foam::fiberCloud::finish
         f.restoreMotion(m0);
         ++nRejected_;
         return;
+    }
+    if (coupling_.valid())
+    {
+        forAll(s, i)
+        {
+            coupling_->add(s[i], forces_.F[i], forces_.K[i], h);
+        }
     }
     nSegmentSteps_ += f.nSegments();
     dispersion_->elapse(f, h);
@@ -998,6 +1013,7 @@ void Foam::fiberCloud::release
         labelList owner(nNew, Pstream::nProcs());
         List<trackedPoint> centre(nNew);
         labelList pending(identity(nNew));
+        labelList attempt(nNew, 0);
         label nRedrawn = 0;
         const label maxRedrawn = 1000*nNew + 10000;
         while (pending.size())
@@ -1019,7 +1035,12 @@ void Foam::fiberCloud::release
             labelList offset(nTry + 1, 0);
             forAll(cand, j)
             {
-                cand.set(j, new fiber(feed.candidate(-1, k0 + pending[j])));
+                const label slot = pending[j];
+                cand.set
+                (
+                    j,
+                    new fiber(feed.candidate(-1, k0 + slot, attempt[slot]++))
+                );
                 offset[j + 1] = offset[j] + cand[j].nSegments();
             }
             labelList candOwner(nTry, Pstream::nProcs());
@@ -1101,6 +1122,13 @@ Foam::fiberCloud::fiberCloud
     fibers_(),
     feeds_(),
     jeffery_(dict.getOrDefault<bool>("jefferyCorrection", false)),
+    coupling_
+    (
+        dict.getOrDefault<Switch>("coupled", false)
+      ? new fiberCoupling(mesh, dict.dictName(), rhoFluid)
+      : nullptr
+    ),
+    buoyancy_(dict.getOrDefault<Switch>("buoyancy", false)),
     hydro_
     (
         rhoFluid,
@@ -1504,6 +1532,11 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     }
     nTransferred_ = returnReduce(nSentStep_, sumOp<label>());
     nOnward_ = returnReduce(nOnwardStep_, sumOp<label>());
+
+    if (coupling_.valid())
+    {
+        coupling_->finish(dt);
+    }
 
     compact();
     checkLocations();

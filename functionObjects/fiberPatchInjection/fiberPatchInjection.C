@@ -230,22 +230,27 @@ Foam::scalar Foam::fiberPatchInjection::releaseTime(const label k) const
 Foam::fiber Foam::fiberPatchInjection::candidate
 (
     const label id,
-    const label kFiber
+    const label kFiber,
+    const label attempt
 )
 {
-    // The size: of fiber kFiber; the place: candidate draw k
+    // The size: of fiber kFiber; the place and orientation: attempt
+    // 'attempt' of fiber kFiber, from a stream of its own (another seed),
+    // so that neither depends on how fibers are grouped into steps
+    ++nCandidates_;
     const fiberSizes::size s(sizes_.draw(seed_, kFiber));
-    const label k = nCandidates_++;
+    const label seed = seed_ ^ 0x2545F491;
+    const label j0 = 32*attempt;
 
     // A triangle by area, a point uniform in it
-    const scalar u = counterRandom::uniform(seed_, k, 0)*cdf_.last();
+    const scalar u = counterRandom::uniform(seed, kFiber, j0)*cdf_.last();
     const label t = min
     (
         label(std::upper_bound(cdf_.begin(), cdf_.end(), u) - cdf_.begin()),
         cdf_.size() - 1
     );
-    scalar a = counterRandom::uniform(seed_, k, 1);
-    scalar b = counterRandom::uniform(seed_, k, 2);
+    scalar a = counterRandom::uniform(seed, kFiber, j0 + 1);
+    scalar b = counterRandom::uniform(seed, kFiber, j0 + 2);
     if (a + b > 1)
     {
         a = 1 - a;
@@ -254,13 +259,18 @@ Foam::fiber Foam::fiberPatchInjection::candidate
     const FixedList<point, 3>& T = tri_[t];
     const point onPatch(T[0] + a*(T[1] - T[0]) + b*(T[2] - T[0]));
 
-    // Orientation: given, or uniform in the free directions
+    // Orientation: given, or uniform in the free directions (normal
+    // deviates from draws 8 attempt + 1, 2, ...: j0 + 4 onwards)
     vector p(dir_);
     if (!fixedDir_)
     {
-        for (label draw = 1; ; ++draw)
+        for (label draw = 8*attempt + 1; ; ++draw)
         {
-            p = cmptMultiply(free_, counterRandom::gaussian(seed_, k, draw));
+            p = cmptMultiply
+            (
+                free_,
+                counterRandom::gaussian(seed, kFiber, draw)
+            );
             if (mag(p) > 1e-6)
             {
                 break;

@@ -395,6 +395,25 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
         }
     }
 
+    // Momentum exchange: the source summed over the cells against the
+    // fibers' hydrodynamic forces
+    if (cloud_->coupling() && Pstream::master() && momentumFilePtr_.valid())
+    {
+        const vector& S = cloud_->coupling()->fluidForce();
+        const vector& F = cloud_->coupling()->fiberForce();
+        OFstream& os = momentumFilePtr_();
+        os  << fiberTime_;
+        for (direction k = 0; k < 3; ++k)
+        {
+            os << tab << S[k];
+        }
+        for (direction k = 0; k < 3; ++k)
+        {
+            os << tab << F[k];
+        }
+        os  << tab << mag(S + F)/max(mag(F), VSMALL) << endl;
+    }
+
     // Events since the last call
     if (cloud_->loggingEvents())
     {
@@ -512,7 +531,7 @@ void Foam::functionObjects::fiberTracking::checkKeywords
         "shearStepFactor", "tolerance", "maxRotation", "maxCo",
         "gravity", "jefferyCorrection", "dispersion", "wallInteraction",
         "restitution", "timePerIteration", "duration", "outputInterval",
-        "vtk", "eventLog",
+        "vtk", "eventLog", "coupled", "buoyancy",
         "injection",
         "functionObjectLibs", "region", "enabled", "log", "timeStart",
         "timeEnd", "executeControl", "executeInterval", "writeControl",
@@ -687,6 +706,19 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
         cloud_->logEvents();
     }
 
+    if (cloud_->coupling())
+    {
+        Info<< "    Two-way coupling: the fibers' drag goes to the fluid as "
+            << fiberCoupling::forceName(name()) << " and "
+            << fiberCoupling::dragRateName(name())
+            << " (fvOption fiberMomentumSource)" << nl;
+    }
+    if (dict.getOrDefault<Switch>("buoyancy", false))
+    {
+        Info<< "    Buoyancy: gravity on each fiber less the fluid it"
+            << " displaces, (1 - rhoInf/density) g" << nl;
+    }
+
     const fiberHydrodynamics& hydro = cloud_->hydrodynamics();
     if (!hydro.viscous())
     {
@@ -769,6 +801,25 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
                 columns += " " + set + "_deposited";
             }
             writeCommented(os, columns);
+            os << endl;
+        }
+
+        if (cloud_->coupling())
+        {
+            momentumFilePtr_ = createFile("momentumExchange");
+            OFstream& os = momentumFilePtr_();
+            writeHeader
+            (
+                os,
+                "Momentum exchange, time averages over each step [N]"
+                " (fiberTracking)"
+            );
+            writeCommented
+            (
+                os,
+                "Time fluidSource_x fluidSource_y fluidSource_z fiberForce_x"
+                " fiberForce_y fiberForce_z mismatch"
+            );
             os << endl;
         }
 

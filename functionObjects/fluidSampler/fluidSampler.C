@@ -75,6 +75,9 @@ void Foam::fluidSampler::interpolate
     const tetIndices tet(tp.tet());
     const barycentric& w = tp.coordinates;
     s.mu = mu_[tp.celli];
+    s.cell = tp.celli;
+    s.proc = Pstream::myProcNo();
+    s.R = tensor::I;
 
     if (UCellPoint_)
     {
@@ -208,6 +211,7 @@ void Foam::fluidSampler::toStartFrame
         s.U = R.T() & s.U;
         s.G = R.T() & s.G & R;
         s.nWall = R.T() & s.nWall;
+        s.R = s.R & R;
     }
 }
 

@@ -70,7 +70,8 @@ void Foam::fiberIntegrators::BDF2::advance
     const UList<fluidSample>& samples,
     const fiberHydrodynamics& hydro,
     const vector& g,
-    const scalar h
+    const scalar h,
+    segmentForces* out
 ) const
 {
     const scalar rho = ratio(f, h);
@@ -97,7 +98,7 @@ void Foam::fiberIntegrators::BDF2::advance
         -f.mass()*(a1*Vn + a2*Vm)/h,
         -(I & (a1*wn + a2*wm))/h,
         wn + rho*(wn - wm),
-        V, w
+        V, w, out
     );
 
     f.moveBy

@@ -93,7 +93,8 @@ void Foam::fiberIntegrator::solve
     const vector& bW,
     const vector& wHat,
     vector& V,
-    vector& w
+    vector& w,
+    segmentForces* out
 )
 {
     const vector V0(f.velocity());
@@ -112,6 +113,17 @@ void Foam::fiberIntegrator::solve
 
     fiberHydrodynamics::segmentLaw k;
 
+    // Per segment for the forces at the solution (out only)
+    List<vector> Fs0;
+    List<tensor> FV0, Fw0;
+    if (out)
+    {
+        Fs0.setSize(samples.size());
+        FV0.setSize(samples.size());
+        Fw0.setSize(samples.size());
+        out->K.setSize(samples.size());
+    }
+
     forAll(samples, i)
     {
         const fluidSample& s = samples[i];
@@ -123,6 +135,14 @@ void Foam::fiberIntegrator::solve
         // F_i = -Kuu V + (Kuu S - Kuw) w + Fs, with v_i = V - S w
         const vector Fs((k.Kuu & s.U) + (k.Kuw & Omega) + k.f0);
         const vector Ts((k.Kwu & s.U) + (k.Kww & Omega) + k.t0);
+
+        if (out)
+        {
+            Fs0[i] = Fs;
+            FV0[i] = -k.Kuu;
+            Fw0[i] = (k.Kuu & fiberHydrodynamics::crossMatrix(r)) - k.Kuw;
+            out->K[i] = tr(k.Kuu)/3;
+        }
 
         if (magSqr(r) == 0)
         {
@@ -158,6 +178,15 @@ void Foam::fiberIntegrator::solve
 
     V = vector(x(0), x(1), x(2));
     w = vector(x(3), x(4), x(5));
+
+    if (out)
+    {
+        out->F.setSize(samples.size());
+        forAll(samples, i)
+        {
+            out->F[i] = Fs0[i] + (FV0[i] & V) + (Fw0[i] & w);
+        }
+    }
 }
 
 

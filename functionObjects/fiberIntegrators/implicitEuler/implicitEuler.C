@@ -40,7 +40,8 @@ void Foam::fiberIntegrators::implicitEuler::advance
     const UList<fluidSample>& samples,
     const fiberHydrodynamics& hydro,
     const vector& g,
-    const scalar dt
+    const scalar dt,
+    segmentForces* out
 ) const
 {
     // Eq. 14-15: c = 1/dt, history m V_n/dt and I w_n/dt, gyroscopic
@@ -53,7 +54,7 @@ void Foam::fiberIntegrators::implicitEuler::advance
         f.mass()*f.velocity()/dt,
         (f.inertia(R) & f.omega())/dt,
         f.omega(),
-        V, w
+        V, w, out
     );
 
     // Eq. 16-17, rigid
