@@ -486,7 +486,27 @@ bool Foam::fiberCloud::prepare
     }
     // Round-off tolerant: a count that is an integer up to round-off
     // (uniform shear) must not flip to the next one
-    const label nParts = max(1, label(std::ceil(parts*(1 - 1e-9))));
+    label nParts = max(1, label(std::ceil(parts*(1 - 1e-9))));
+
+    // Gravity can speed a fiber up within the sub-step beyond the speeds
+    // the cell limit sees (a fiber from rest in a long step): keep
+    // (speed + |g| h) h within maxCo cell lengths
+    const scalar magG = mag(g_);
+    if (magG > 0)
+    {
+        scalar speed = mag(f.velocity()) + 0.5*mag(f.omega())*f.length();
+        for (const fluidSample& si : s)
+        {
+            speed = max(speed, mag(si.U));
+        }
+        const scalar dx = control_.maxCo()*cellLength_[f.location().celli];
+        const scalar hMax =
+            2*dx/(speed + std::sqrt(sqr(speed) + 4*magG*dx));
+        if (tLeft_[fi] > nParts*hMax)
+        {
+            nParts = label(std::ceil(tLeft_[fi]/hMax));
+        }
+    }
     h = tLeft_[fi]/nParts;
 
     // Eq. 23: not beyond the end of the fiber's eddy
@@ -1320,6 +1340,12 @@ void Foam::fiberCloud::writeRestart(Ostream& os) const
         os << token::SPACE;
         feed.writeRestart(os);
     }
+    os  << nl << "coupled " << label(coupling_.valid());
+    if (coupling_.valid())
+    {
+        os  << nl << coupling_->force().field() << nl
+            << coupling_->dragRate().field();
+    }
     os  << nl
         << "nFibers " << fibers_.size() << nl;
     for (const fiber& f : fibers_)
@@ -1385,6 +1411,24 @@ void Foam::fiberCloud::readRestart(Istream& is)
     for (fiberPatchInjection& feed : feeds_)
     {
         feed.readRestart(is);
+    }
+
+    // The coupling's averages of the last step (written by a coupled run)
+    label wasCoupled;
+    is  >> key >> wasCoupled;
+    if (wasCoupled)
+    {
+        const vectorField S(is);
+        const scalarField beta(is);
+        if (coupling_.valid())
+        {
+            coupling_->restore(S, beta);
+        }
+    }
+    else if (coupling_.valid())
+    {
+        Info<< "    Restart: the file was written without coupling; the"
+            << " fibers act on the fluid from the first step on" << endl;
     }
     label n;
     is >> key >> n;
