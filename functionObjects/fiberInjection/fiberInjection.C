@@ -24,19 +24,6 @@ namespace
 
 using namespace Foam;
 
-vector unitVector(const dictionary& dict, const word& key)
-{
-    const vector p = dict.get<vector>(key);
-    if (!(mag(p) > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry '" << key << "' must be a non-zero vector, not " << p
-            << exit(FatalIOError);
-    }
-    return p/mag(p);
-}
-
-
 //- Uniform on the sphere (in the free directions): normalised Gaussian
 vector randomDirection(Random& rnd, const vector& freeDirections)
 {
@@ -108,11 +95,13 @@ void inRegion
             << "Entry 'nFibers' must be at least 1, not " << nFibers
             << exit(FatalIOError);
     }
-    const label seed = setDict.getOrDefault<label>("seed", 1);
+    const label seed = keywordCheck::seed(setDict);
     const bool fixedDir = setDict.found("direction");
     const vector dir
     (
-        fixedDir ? unitVector(setDict, "direction") : vector(1, 0, 0)
+        fixedDir
+      ? keywordCheck::unitVector(setDict, "direction")
+      : vector(1, 0, 0)
     );
 
     // The region's cells and bounding box
@@ -391,13 +380,7 @@ void Foam::fiberInjection::read
         }
 
         const fiberSizes sizes(setDict);
-        const label seed = setDict.getOrDefault<label>("seed", 1);
-        if (seed < 0)
-        {
-            FatalIOErrorInFunction(setDict)
-                << "Entry 'seed' must be at least 0, not " << seed
-                << exit(FatalIOError);
-        }
+        const label seed = keywordCheck::seed(setDict);
 
         if (setType == "list")
         {
@@ -438,7 +421,7 @@ void Foam::fiberInjection::read
                     (
                         made.size(),
                         fd.get<point>("centre"),
-                        unitVector(fd, "direction"),
+                        keywordCheck::unitVector(fd, "direction"),
                         sz, rho, setIndex
                     )
                 );
@@ -465,7 +448,9 @@ void Foam::fiberInjection::read
             const bool fixedDir = setDict.found("direction");
             const vector dir
             (
-                fixedDir ? unitVector(setDict, "direction") : vector(1, 0, 0)
+                fixedDir
+      ? keywordCheck::unitVector(setDict, "direction")
+      : vector(1, 0, 0)
             );
 
             Random rnd(seed);
@@ -504,7 +489,7 @@ void Foam::fiberInjection::read
             }
             const point a(setDict.get<point>("start"));
             const point b(setDict.get<point>("end"));
-            const vector dir(unitVector(setDict, "direction"));
+            const vector dir(keywordCheck::unitVector(setDict, "direction"));
             for (label k = 0; k < nFibers; ++k)
             {
                 const scalar w = nFibers > 1 ? scalar(k)/(nFibers - 1) : 0.5;

@@ -121,7 +121,7 @@ Foam::fiberPatchInjection::fiberPatchInjection
     start_(setDict.get<scalar>("start")),
     duration_(keywordCheck::positive(setDict, "duration")),
     rate_(keywordCheck::positive(setDict, "fibersPerSecond")),
-    seed_(setDict.getOrDefault<label>("seed", 1)),
+    seed_(keywordCheck::seed(setDict)),
     fixedDir_(setDict.found("direction")),
     dir_(1, 0, 0),
     fixedU_(setDict.found("velocity")),
@@ -129,7 +129,6 @@ Foam::fiberPatchInjection::fiberPatchInjection
     free_(freeDirections),
     sizes_(setDict),
     nReleased_(0),
-    nCandidates_(0),
     nRedrawn_(0)
 {
     const word patchName(setDict.get<word>("patch"));
@@ -156,12 +155,6 @@ Foam::fiberPatchInjection::fiberPatchInjection
             << "Entry 'start' must be at least 0, not " << start_
             << exit(FatalIOError);
     }
-    if (seed_ < 0)
-    {
-        FatalIOErrorInFunction(setDict)
-            << "Entry 'seed' must be at least 0, not " << seed_
-            << exit(FatalIOError);
-    }
     if (rate_*duration_ > labelMax/2)
     {
         FatalIOErrorInFunction(setDict)
@@ -171,14 +164,7 @@ Foam::fiberPatchInjection::fiberPatchInjection
     }
     if (fixedDir_)
     {
-        dir_ = setDict.get<vector>("direction");
-        if (!(mag(dir_) > 0))
-        {
-            FatalIOErrorInFunction(setDict)
-                << "Entry 'direction' must be a non-zero vector, not "
-                << dir_ << exit(FatalIOError);
-        }
-        dir_ /= mag(dir_);
+        dir_ = keywordCheck::unitVector(setDict, "direction");
         if (mag(dir_ - cmptMultiply(free_, dir_)) > 1e-9)
         {
             FatalIOErrorInFunction(setDict)
@@ -232,12 +218,11 @@ Foam::fiber Foam::fiberPatchInjection::candidate
     const label id,
     const label kFiber,
     const label attempt
-)
+) const
 {
     // The size: of fiber kFiber; the place and orientation: attempt
     // 'attempt' of fiber kFiber, from a stream of its own (another seed),
     // so that neither depends on how fibers are grouped into steps
-    ++nCandidates_;
     const fiberSizes::size s(sizes_.draw(seed_, kFiber));
     const label seed = seed_ ^ 0x2545F491;
     const label j0 = 32*attempt;
@@ -292,14 +277,13 @@ Foam::fiber Foam::fiberPatchInjection::candidate
 
 void Foam::fiberPatchInjection::writeRestart(Ostream& os) const
 {
-    os  << nReleased_ << token::SPACE << nCandidates_ << token::SPACE
-        << nRedrawn_;
+    os  << nReleased_ << token::SPACE << nRedrawn_;
 }
 
 
 void Foam::fiberPatchInjection::readRestart(Istream& is)
 {
-    is >> nReleased_ >> nCandidates_ >> nRedrawn_;
+    is >> nReleased_ >> nRedrawn_;
 }
 
 

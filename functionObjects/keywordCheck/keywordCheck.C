@@ -115,4 +115,34 @@ Foam::scalar Foam::keywordCheck::positive
 }
 
 
+Foam::vector Foam::keywordCheck::unitVector
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    const vector p = dict.get<vector>(key);
+    if (!(mag(p) > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' must be a non-zero vector, not " << p
+            << exit(FatalIOError);
+    }
+    return p/mag(p);
+}
+
+
+Foam::label Foam::keywordCheck::seed(const dictionary& dict)
+{
+    const label s = dict.getOrDefault<label>("seed", 1);
+    if (s < 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'seed' must be at least 0, not " << s
+            << exit(FatalIOError);
+    }
+    return s;
+}
+
+
 // ************************************************************************* //

@@ -40,7 +40,7 @@ Foam::fiberDispersions::GosmanIoannides::GosmanIoannides
 :
     Cmu_(coeffs.getOrDefault<scalar>("Cmu", 0.09)),
     CmuExponent_(coeffs.getOrDefault<scalar>("CmuExponent", 0.63)),
-    seed_(coeffs.getOrDefault<label>("seed", 1)),
+    seed_(keywordCheck::seed(coeffs)),
     CmuN_(0)
 {
     keywordCheck::warnUnknown
@@ -53,12 +53,6 @@ Foam::fiberDispersions::GosmanIoannides::GosmanIoannides
     {
         FatalIOErrorInFunction(coeffs)
             << "Entry 'Cmu' must be positive, not " << Cmu_
-            << exit(FatalIOError);
-    }
-    if (seed_ < 0)
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "Entry 'seed' must be >= 0, not " << seed_
             << exit(FatalIOError);
     }
     CmuN_ = std::pow(Cmu_, CmuExponent_);
