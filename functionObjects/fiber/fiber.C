@@ -102,6 +102,7 @@ Foam::fiber::fiber
     psi_(Zero),
     eddyTime_(0),
     nDraws_(0),
+    nSubSteps_(Zero),
     location_(),
     segmentLocations_(lengths.size())
 {

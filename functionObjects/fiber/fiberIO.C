@@ -43,6 +43,7 @@ Foam::fiber::fiber(Istream& is)
     psi_(is),
     eddyTime_(readScalar(is)),
     nDraws_(readLabel(is)),
+    nSubSteps_(is),
     location_(),
     segmentLocations_(l_.size())
 {
@@ -77,7 +78,8 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
         << f.jumped_ << token::SPACE
         << f.psi_ << token::SPACE
         << f.eddyTime_ << token::SPACE
-        << f.nDraws_;
+        << f.nDraws_ << token::SPACE
+        << f.nSubSteps_;
 
     os.check(FUNCTION_NAME);
     return os;

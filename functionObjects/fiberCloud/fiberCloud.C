@@ -428,7 +428,8 @@ bool Foam::fiberCloud::prepare
 (
     const label fi,
     UList<fluidSample>& s,
-    scalar& h
+    scalar& h,
+    label& why
 )
 {
     fiber& f = fibers_[fi];
@@ -456,6 +457,7 @@ bool Foam::fiberCloud::prepare
         // Back inside, then the step goes on with these samples, taken
         // on the wall face (a fiber pressed onto a wall slides along it);
         // the centre's location moves along
+        stepStats_.addRebound();
         const vector shift
         (
             rebound
@@ -474,19 +476,10 @@ bool Foam::fiberCloud::prepare
         }
     }
 
-    // Equal parts of the time left, at the rate the step control asks
-    const scalar parts =
-        tLeft_[fi]*control_.rate(f, s, cellLength_[f.location().celli]);
-    if (parts > labelMax/2)
-    {
-        FatalErrorInFunction
-            << "Fiber " << f.id() << " needs " << parts
-            << " sub-steps over " << tLeft_[fi] << " s"
-            << exit(FatalError);
-    }
-    // Round-off tolerant: a count that is an integer up to round-off
-    // (uniform shear) must not flip to the next one
-    label nParts = max(1, label(std::ceil(parts*(1 - 1e-9))));
+    // The rate the step control asks for on the mean flow (Eq. 22 or the
+    // error estimate, and the cell limit)
+    scalar rate =
+        control_.rate(f, s, cellLength_[f.location().celli], &why);
 
     // Gravity can speed a fiber up within the sub-step beyond the speeds
     // the cell limit sees (a fiber from rest in a long step): keep
@@ -502,18 +495,63 @@ bool Foam::fiberCloud::prepare
         const scalar dx = control_.maxCo()*cellLength_[f.location().celli];
         const scalar hMax =
             2*dx/(speed + std::sqrt(sqr(speed) + 4*magG*dx));
-        if (tLeft_[fi] > nParts*hMax)
+        if (1/hMax > rate)
         {
-            nParts = label(std::ceil(tLeft_[fi]/hMax));
+            rate = 1/hMax;
+            why = subStepStatistics::cell;
         }
     }
-    h = tLeft_[fi]/nParts;
 
-    // Eq. 23: not beyond the end of the fiber's eddy
+    // The time to the next break: the end of the step, or the end of the
+    // fiber's eddy if that comes first (Eq. 23: an eddy interaction ends
+    // when the eddy does).  The fluctuation is added to the samples here
+    scalar T = tLeft_[fi];
+    bool eddyEnds = false;
     if (dispersion_->active())
     {
-        h = min(h, dispersion_->correct(f, s));
+        const scalar tEddy = dispersion_->correct(f, s);
+        if (tEddy < (1 + 1e-9)*T)
+        {
+            eddyEnds = true;
+            if (tEddy > (1 - 1e-9)*T)
+            {
+                // Both end at the same instant up to round-off
+                f.eddyTime() = T;
+            }
+            else
+            {
+                T = tEddy;
+            }
+        }
     }
+
+    // Equal parts up to the break: no sliver of a sub-step is left where
+    // the steps the rate asks for do not fill it
+    const scalar parts = T*rate;
+    if (parts > labelMax/2)
+    {
+        FatalErrorInFunction
+            << "Fiber " << f.id() << " needs " << parts
+            << " sub-steps over " << T << " s"
+            << exit(FatalError);
+    }
+    // Round-off tolerant: a count that is an integer up to round-off
+    // (uniform shear) must not flip to the next one
+    const label nParts = max(1, label(std::ceil(parts*(1 - 1e-9))));
+    if (parts < 1 - 1e-6)
+    {
+        // The rate allows a step longer than the time to the break (up to
+        // round-off: the last of equal parts has parts = 1): the break
+        // binds, the eddy's end, the step's, or the rest of the step of a
+        // fiber released in it
+        why =
+            eddyEnds ? subStepStatistics::eddy
+          : nSub_[fi] == 0 && tLeft_[fi] < (1 - 1e-12)*dt_
+          ? subStepStatistics::release
+          : subStepStatistics::stepEnd;
+    }
+    h = T/nParts;
+
     constraint_.constrain(s);
     return true;
 }
@@ -523,7 +561,8 @@ void Foam::fiberCloud::finish
 (
     const label fi,
     const UList<fluidSample>& s,
-    const scalar h
+    const scalar h,
+    const label why
 )
 {
     fiber& f = fibers_[fi];
@@ -558,6 +597,8 @@ void Foam::fiberCloud::finish
     dispersion_->elapse(f, h);
     dtSubMin_ = min(dtSubMin_, h);
     ++nSub_[fi];
+    f.countSubStep(why);
+    stepStats_.add(why, h);
     tLeft_[fi] -= h;
     if (tLeft_[fi] <= 1e-9*h)
     {
@@ -621,7 +662,10 @@ void Foam::fiberCloud::centreMoved
             const label patchi = mesh_.boundaryMesh().whichPatch(c.face);
             ++nEscapedSetStep_[fibers_[fi].setIndex()];
             ++nEscapedOutletStep_[outletIndex_[patchi]];
-            recordEvent(fibers_[fi], tEnd_, eventKind::escaped, patchi);
+            recordEvent
+            (
+                fibers_[fi], tEnd_ - tLeft_[fi], eventKind::escaped, patchi
+            );
             break;
         }
     }
@@ -651,6 +695,7 @@ void Foam::fiberCloud::centreAtWall
         const vector n(Sf/mag(Sf));
         const point onWall(tracker_.position(f.location()));
         const scalar e = isMirror ? 1 : restitution_;
+        stepStats_.addRebound();
         rebound(f, n, max(h.left & n, scalar(0)), e);
         h = tracker_.track(f.location(), f.position() - onWall, h.face);
         if
@@ -694,7 +739,8 @@ void Foam::fiberCloud::runLocal(const label fi)
             return;
         }
         scalar h;
-        if (!prepare(fi, s, h))
+        label why;
+        if (!prepare(fi, s, h, why))
         {
             return;
         }
@@ -713,11 +759,11 @@ void Foam::fiberCloud::runLocal(const label fi)
                 dispersion_->correct(f, s2);
             }
             constraint_.constrain(s2);
-            finish(fi, s2, h);
+            finish(fi, s2, h, why);
         }
         else
         {
-            finish(fi, s, h);
+            finish(fi, s, h, why);
         }
     }
 }
@@ -781,6 +827,7 @@ void Foam::fiberCloud::round()
     List<fluidSample> s(offset.last());
     List<fluidSample> s2(offset.last());
     scalarList h(status_.size(), Zero);
+    labelList why(status_.size(), Zero);
 
     sampleWaiting(waiting, offset, nullptr, s);
 
@@ -788,7 +835,7 @@ void Foam::fiberCloud::round()
     for (const label fi : waiting)
     {
         SubList<fluidSample> sf(s, fibers_[fi].nSegments(), offset[fi]);
-        prepare(fi, sf, h[fi]);
+        prepare(fi, sf, h[fi], why[fi]);
     }
 
     if (integrator_->predicts())
@@ -812,7 +859,7 @@ void Foam::fiberCloud::round()
                 dispersion_->correct(f, sf);
             }
             constraint_.constrain(sf);
-            finish(fi, sf, h[fi]);
+            finish(fi, sf, h[fi], why[fi]);
         }
         else
         {
@@ -820,7 +867,8 @@ void Foam::fiberCloud::round()
             (
                 fi,
                 SubList<fluidSample>(s, f.nSegments(), offset[fi]),
-                h[fi]
+                h[fi],
+                why[fi]
             );
         }
     }
@@ -975,7 +1023,7 @@ void Foam::fiberCloud::deposit(const label fi)
     status_[fi] = status::gone;
     ++nDepositedStep_;
     ++nDepositedSetStep_[fibers_[fi].setIndex()];
-    recordEvent(fibers_[fi], tEnd_, eventKind::deposited, -1);
+    recordEvent(fibers_[fi], tEnd_ - tLeft_[fi], eventKind::deposited, -1);
 }
 
 
@@ -1182,6 +1230,7 @@ Foam::fiberCloud::fiberCloud
     events_(),
     logInitial_(false),
     tEnd_(0),
+    dt_(0),
     restarted_(restart != nullptr),
     nSubMax_(0),
     dtSubMin_(0),
@@ -1456,7 +1505,9 @@ void Foam::fiberCloud::readRestart(Istream& is)
 void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
 {
     tEnd_ = t0 + dt;
+    dt_ = dt;
     sampler_.resetCounters();
+    stepStats_.clear();
 
     if (logInitial_)
     {
@@ -1482,8 +1533,9 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     tLeft_ = dt;
     forAll(tLeftNew, j)
     {
-        tLeft_[nOld + j] = tLeftNew[j];
-        if (!(tLeftNew[j] > 0))
+        // A release at the step's end up to round-off takes no sub-step
+        tLeft_[nOld + j] = tLeftNew[j] > 1e-9*dt ? tLeftNew[j] : 0;
+        if (!(tLeft_[nOld + j] > 0))
         {
             status_[nOld + j] = status::done;
         }
@@ -1576,6 +1628,9 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     }
     nTransferred_ = returnReduce(nSentStep_, sumOp<label>());
     nOnward_ = returnReduce(nOnwardStep_, sumOp<label>());
+    stepStats_.reduce();
+    runStats_ += stepStats_;
+    recordCostly();
 
     if (coupling_.valid())
     {
@@ -1666,6 +1721,140 @@ Foam::fiberCloud::setCounts() const
         c[k][3] = nDepositedSet_[k];
     }
     return c;
+}
+
+
+namespace Foam
+{
+    //- Merge packed records of costly fibers by id (the one with the most
+    //  sub-steps of each) and keep the n with the most, most first
+    static scalarList keepCostliest
+    (
+        const UList<scalar>& recs,
+        const label m,
+        const label n
+    )
+    {
+        auto nSub = [&](const label r)
+        {
+            scalar t = 0;
+            for (label l = 0; l < subStepStatistics::nLimits; ++l)
+            {
+                t += recs[m*r + 1 + l];
+            }
+            return t;
+        };
+        const label nRec = recs.size()/m;
+        DynamicList<label> keep;
+        for (label r = 0; r < nRec; ++r)
+        {
+            bool better = true;
+            for (label q = 0; q < nRec; ++q)
+            {
+                // A record of the same fiber with more sub-steps (or the
+                // same and earlier in the list) wins
+                if
+                (
+                    q != r && recs[m*q] == recs[m*r]
+                 && (nSub(q) > nSub(r) || (nSub(q) == nSub(r) && q < r))
+                )
+                {
+                    better = false;
+                    break;
+                }
+            }
+            if (better)
+            {
+                keep.append(r);
+            }
+        }
+        std::stable_sort
+        (
+            keep.begin(),
+            keep.end(),
+            [&](const label a, const label b) { return nSub(a) > nSub(b); }
+        );
+        keep.setSize(min(keep.size(), n));
+        scalarList out(m*keep.size());
+        forAll(keep, k)
+        {
+            for (label j = 0; j < m; ++j)
+            {
+                out[m*k + j] = recs[m*keep[k] + j];
+            }
+        }
+        return out;
+    }
+}
+
+
+void Foam::fiberCloud::recordCostly()
+{
+    const label m = costlySize;
+
+    // The nCostly fibers here with the most sub-steps (one pass)
+    FixedList<label, nCostly> top(-1);
+    FixedList<scalar, nCostly> topN(-1);
+    forAll(fibers_, fi)
+    {
+        scalar n = 0;
+        for (const scalar k : fibers_[fi].nSubSteps())
+        {
+            n += k;
+        }
+        label at = nCostly;
+        while (at > 0 && n > topN[at - 1])
+        {
+            --at;
+        }
+        if (at < nCostly)
+        {
+            for (label k = nCostly - 1; k > at; --k)
+            {
+                top[k] = top[k - 1];
+                topN[k] = topN[k - 1];
+            }
+            top[at] = fi;
+            topN[at] = n;
+        }
+    }
+
+    // With those kept from before (fibers gone since, or passed on)
+    DynamicList<scalar> recs(costly_);
+    for (const label fi : top)
+    {
+        if (fi < 0)
+        {
+            continue;
+        }
+        const fiber& f = fibers_[fi];
+        recs.append(f.id());
+        for (const scalar k : f.nSubSteps())
+        {
+            recs.append(k);
+        }
+        for (direction c = 0; c < 3; ++c)
+        {
+            recs.append(f.position()[c]);
+        }
+        recs.append(f.location().celli);
+        recs.append(tEnd_);
+    }
+    costly_ = keepCostliest(recs, m, nCostly);
+}
+
+
+Foam::scalarList Foam::fiberCloud::costliest() const
+{
+    List<scalarList> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = costly_;
+    Pstream::gatherList(all);
+    DynamicList<scalar> recs;
+    for (const scalarList& r : all)
+    {
+        recs.append(r);
+    }
+    return keepCostliest(recs, costlySize, nCostly);
 }
 
 

@@ -220,9 +220,15 @@ void Foam::functionObjects::fiberTracking::advance
 
 void Foam::functionObjects::fiberTracking::logStep() const
 {
+    const subStepStatistics& st = cloud_->stepStatistics();
+    const string bound
+    (
+        subStepStatistics::name(st.hMinLimit(), cloud_->control().ruleName())
+    );
     Log << type() << " " << name() << " execute: fiber time " << fiberTime_
         << ", sub-steps " << cloud_->nSubMax()
-        << " (smallest " << cloud_->dtSubMin() << " s), fiber CPU time "
+        << " (median " << st.median() << " s, smallest " << st.hMin()
+        << " s: " << bound.c_str() << "), fiber CPU time "
         << cpuFibers_ << " s for " << cloud_->nSegmentSteps()
         << " segment steps";
     if (cloud_->control().control() == subStepControl::mode::tolerance)
@@ -294,6 +300,55 @@ void Foam::functionObjects::fiberTracking::progress(const bool last)
         << s.nDeposited << "; " << cpuFibers_ << " s of CPU so far, "
         << (fiberTime_ > 0 ? cpuFibers_/fiberTime_ : 0)
         << " s of CPU per second of fiber time" << endl;
+    if (!last)
+    {
+        reportCost();
+    }
+}
+
+
+void Foam::functionObjects::fiberTracking::liveProgress()
+{
+    if (cpuFibers_ - cpuProgress_ < 60)
+    {
+        return;
+    }
+    cpuProgress_ = cpuFibers_;
+    reportCost();
+}
+
+
+void Foam::functionObjects::fiberTracking::reportCost() const
+{
+    const word rule(cloud_->control().ruleName());
+    const subStepStatistics& st = cloud_->runStatistics();
+    const scalarList top(cloud_->costliest());
+    Info<< type() << " " << name() << " sub-steps so far: ";
+    st.report(Info, rule);
+    Info<< endl;
+    const label m = fiberCloud::costlySize;
+    for (label k = 0; k < top.size()/m; ++k)
+    {
+        const scalar* r = &top[m*k];
+        scalar n = 0;
+        label lMax = 0;
+        for (label l = 0; l < subStepStatistics::nLimits; ++l)
+        {
+            n += r[1 + l];
+            if (r[1 + l] > r[1 + lMax])
+            {
+                lMax = l;
+            }
+        }
+        const label j = 1 + subStepStatistics::nLimits;
+        Info<< type() << " " << name() << " most sub-steps: fiber "
+            << label(r[0]) << ", " << n << " ("
+            << subStepStatistics::name(lMax, rule).c_str() << " "
+            << 0.1*std::round(1000*r[1 + lMax]/max(n, scalar(1)))
+            << " %), at (" << r[j] << ' ' << r[j + 1] << ' ' << r[j + 2]
+            << ") in cell " << label(r[j + 3]) << " at fiber time "
+            << r[j + 4] << endl;
+    }
 }
 
 
@@ -879,6 +934,7 @@ bool Foam::functionObjects::fiberTracking::execute()
         {
             updateFields();
             advance(dt);
+            liveProgress();
         }
         if (time_.writeTime())
         {
@@ -949,6 +1005,16 @@ bool Foam::functionObjects::fiberTracking::execute()
         }
     }
 
+    return true;
+}
+
+
+bool Foam::functionObjects::fiberTracking::end()
+{
+    if (cloud_.valid())
+    {
+        reportCost();
+    }
     return true;
 }
 

@@ -128,9 +128,12 @@ Foam::scalar Foam::subStepControl::rate
 (
     const fiber& f,
     const UList<fluidSample>& s,
-    const scalar cellLength
+    const scalar cellLength,
+    label* bound
 ) const
 {
+    scalar r = 0;
+    scalar cells = 0;
     if (mode_ == mode::paper)
     {
         // Eq. 22 and the cell limit: the shear rate and the speeds only
@@ -142,16 +145,36 @@ Foam::scalar Foam::subStepControl::rate
             speed = max(speed, mag(s[i].U));
         }
         const scalar rc = f.length()/f.minDiameter();
-        return max(rc*gammaDot/shearStepFactor_, speed/(maxCo_*cellLength));
+        r = rc*gammaDot/shearStepFactor_;
+        cells = speed/(maxCo_*cellLength);
     }
+    else
+    {
+        scalar gammaDot, speed, dudt;
+        scales(f, s, gammaDot, speed, dudt);
+        r = toleranceRate(f, gammaDot, speed, dudt);
+        cells = speed/(maxCo_*cellLength);
+    }
+    if (bound)
+    {
+        *bound =
+            cells > r ? subStepStatistics::cell : subStepStatistics::rule;
+    }
+    return max(r, cells);
+}
 
-    scalar gammaDot, speed, dudt;
-    scales(f, s, gammaDot, speed, dudt);
-    const scalar cells = speed/(maxCo_*cellLength);
 
+Foam::scalar Foam::subStepControl::toleranceRate
+(
+    const fiber& f,
+    const scalar gammaDot,
+    const scalar speed,
+    const scalar dudt
+) const
+{
     // The rotation and the lag of the sampled fluid (see Description)
     const scalar turn = 2*tipSpeed(f, f.R(), f.omega())/f.length();
-    scalar r = max(cells, max(gammaDot, turn)/maxRotation_);
+    scalar r = max(gammaDot, turn)/maxRotation_;
     if (dudt > 0)
     {
         r = max(r, dudt/(2*tolerance_*speed));
