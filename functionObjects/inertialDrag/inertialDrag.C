@@ -80,8 +80,21 @@ void Foam::inertialDrag::moments
 
         const scalar P1 = 2*(a & b);
         const scalar P2 = beta*beta;
-        const int nTerms = 40;
-        scalar c[nTerms];
+
+        // Terms needed: |a + s b| = |a| sqrt((1 - s/r1)(1 - s/r2)), the
+        // roots at |r| = |a|/|b|; the binomial coefficients of sqrt(1 - x)
+        // are at most 1/2 (k >= 1), so |c_n| h^n <= |a| rho^n (n + 3)/4,
+        // rho = |b| h/|a| <= 1/4, and the terms beyond n = N add at most
+        // rho^(N+1)/(1 - rho) of the moments' scales 2 h |a|, h^2 |a|,
+        // 2 h^3 |a|/3: N from rho^(N+1) <= 1e-17 (1 - rho)
+        const scalar rho = beta*h/magA;
+        const int nMax = 40;
+        int nTerms = 1;
+        for (scalar r = rho; nTerms < nMax && r > 1e-17*(1 - rho); r *= rho)
+        {
+            ++nTerms;
+        }
+        scalar c[nMax];
         c[0] = magA;
 
         scalar hPow = h;   // h^(n+1)
@@ -89,10 +102,16 @@ void Foam::inertialDrag::moments
         {
             if (n > 0)
             {
+                // c_n from sum_k c_k c_(n-k) = P_n (P_n = 0, n > 2), the
+                // symmetric sum taken once
                 scalar rhs = (n == 1 ? P1 : (n == 2 ? P2 : 0));
-                for (int k = 1; k < n; ++k)
+                for (int k = 1; 2*k < n; ++k)
                 {
-                    rhs -= c[k]*c[n - k];
+                    rhs -= 2*c[k]*c[n - k];
+                }
+                if (n % 2 == 0 && n > 1)
+                {
+                    rhs -= c[n/2]*c[n/2];
                 }
                 c[n] = rhs/(2*c[0]);
             }

@@ -346,6 +346,8 @@ void testInertialDrag()
         {"exactZeroCrossing", vector(0.04, 0, 0), vector(-1000, 0, 0)},
         {"noSignChange", vector(0.3, 0.1, 0), vector(-1500, 900, 0)},
         {"smallGradientSeries", vector(0.3, 0.1, 0), vector(200, -700, 0)},
+        // |b| l/2 = 0.2494 |a|: the series at its branch limit, most terms
+        {"seriesAtBranchLimit", vector(0.3, 0, 0), vector(400, 600, 200)},
         {"skew3D", vector(0.02, -0.07, 0.01), vector(300, 500, -800)}
     });
 
