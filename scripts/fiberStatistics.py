@@ -39,7 +39,11 @@
 # combined standard error sqrt(se_j^2 + se_r^2) (conservative where the
 # two runs of the same fibers are positively correlated) and the paired
 # one (the batch means of the differences, valid for the same fibers);
-# PASS when |difference| <= Z combined standard errors (Z = 3).  A
+# PASS when |difference| <= Z combined standard errors (Z = 3).  The
+# paired z (difference over the paired standard error) is reported too: it
+# can detect smaller biases where the runs stay correlated (early times),
+# and the summary line counts the statistics beyond Z paired standard
+# errors with the largest of their differences.  A
 # statistic with fewer than B/2 batches that hold data is left out (n/a).
 # -----------------------------------------------------------------------------
 import glob
@@ -247,7 +251,8 @@ def main():
     (pj, aj), (pr, ar) = stats
     Z = opt['-z']
     rows = []
-    nPass = nFail = 0
+    nPass = nFail = nPaired = 0
+    dPaired = 0.0
     for n in pr:
         if n not in pj:
             continue
@@ -259,26 +264,31 @@ def main():
                     and max(abs(aj[n]), abs(ar[n])) < 1e-9):
             # no data, or a direction the fibers do not have (2-D)
             rows.append((n, aj[n], ar[n], np.nan, sj, sr, np.nan, np.nan,
-                         np.nan, 'n/a'))
+                         np.nan, np.nan, 'n/a'))
             continue
         d = aj[n] - ar[n]
         sc = math.sqrt(sj**2 + sr**2)
         z = d/sc if sc > 0 else (0.0 if d == 0 else np.inf)
+        zp = d/sp if sp > 0 else (0.0 if d == 0 else np.inf)
         ok = abs(z) <= Z
         nPass += ok
         nFail += not ok
-        rows.append((n, aj[n], ar[n], d, sj, sr, sc, sp, z,
+        if abs(zp) > Z:
+            nPaired += 1
+            dPaired = max(dPaired, abs(d))
+        rows.append((n, aj[n], ar[n], d, sj, sr, sc, sp, z, zp,
                      'PASS' if ok else 'FAIL'))
     head = ('# %s statistic judged reference difference seJudged seRef'
-            ' seCombined sePaired z verdict' % opt['-label']).replace(
+            ' seCombined sePaired z zPaired verdict' % opt['-label']).replace(
                 '#  ', '# ')
     lines = [head]
     for r in rows:
         lines.append('%-34s %11.5g %11.5g %11.3g %10.3g %10.3g %10.3g '
-                     '%10.3g %7.2f %s' % r)
+                     '%10.3g %7.2f %7.2f %s' % r)
     lines.append('# %d pass, %d fail (|difference| <= %g combined standard'
-                 ' errors), batches %d, windows %d' % (nPass, nFail, Z, B,
-                                                       W))
+                 ' errors), batches %d, windows %d; paired: %d beyond %g'
+                 ' paired standard errors, the largest of their differences'
+                 ' %.3g' % (nPass, nFail, Z, B, W, nPaired, Z, dPaired))
     text = '\n'.join(lines)
     print(text)
     if opt['-table']:

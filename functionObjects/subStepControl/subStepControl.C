@@ -27,13 +27,13 @@ Foam::subStepControl::modeNames
 
 Foam::subStepControl::subStepControl(const dictionary& dict)
 :
-    mode_(mode::paper),
+    mode_(mode::tolerance),
     shearStepFactor_(keywordCheck::positive(dict, "shearStepFactor", 0.1)),
-    tolerance_(keywordCheck::positive(dict, "tolerance", 3e-3)),
+    tolerance_(keywordCheck::positive(dict, "tolerance", 0.1)),
     maxRotation_(keywordCheck::positive(dict, "maxRotation", 0.2)),
     maxCo_(keywordCheck::positive(dict, "maxCo", 1))
 {
-    const word m(dict.getOrDefault<word>("subStepControl", "paper"));
+    const word m(dict.getOrDefault<word>("subStepControl", "tolerance"));
     if (!modeNames.found(m))
     {
         FatalIOErrorInFunction(dict)
