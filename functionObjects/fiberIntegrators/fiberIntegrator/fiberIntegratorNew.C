@@ -21,7 +21,7 @@ Foam::autoPtr<Foam::fiberIntegrator> Foam::fiberIntegrator::New
 {
     const word schemeType
     (
-        dict.getOrDefault<word>("integrator", "implicitEuler")
+        dict.getOrDefault<word>("integrator", "BDF2")
     );
 
     Info<< "    Selecting fiber integrator " << schemeType << endl;
