@@ -13,7 +13,8 @@
 # sphere: <|p_k|> = 1/2, var |p_k| = 1/12, <p_k p_k> = 1/3, var = 4/45.
 # biasX > 0 mixes the x axis in: p is replaced, with probability biasX, by
 # +-e_x (so <|p_x|> = 1/2 + biasX/2).  Fates: outlet 'a' with probability
-# 0.3 (escape at t uniform in (0, 0.1)), 'b' with 0.5, in the domain 0.2.
+# 0.3 (escape at t uniform in (0, 0.1)), 'b' with 0.5, in the domain 0.2,
+# whatever the length: 1, 2 or 3 mm by id (three length classes).
 # -----------------------------------------------------------------------------
 import os
 import sys
@@ -44,7 +45,8 @@ with open(os.path.join(run, '0', 'fiberEvents.dat'), 'w') as f:
     f.write('# Time id set event patch nSegments length diameter cx cy cz'
             ' px py pz\n')
     for i in range(n):
-        f.write('0 %d feed injected inlet 5 0.001 2e-05 0 0 0 1 0 0\n' % i)
+        f.write('0 %d feed injected inlet 5 %g 2e-05 0 0 0 1 0 0\n'
+                % (i, 1e-3*(1 + i % 3)))
     for i in range(n):
         if u[i] < 0.8:
             o = 'a' if u[i] < 0.3 else 'b'
