@@ -286,7 +286,13 @@ void Foam::functionObjects::fiberTracking::writeRestart() const
 
 void Foam::functionObjects::fiberTracking::progress(const bool last)
 {
-    if (!last && cpuFibers_ - cpuProgress_ < 5)
+    // One decision for all processors (the lines are collective); the
+    // CPU times differ between processors
+    if
+    (
+        !last
+     && !returnReduce(cpuFibers_ - cpuProgress_ >= 5, orOp<bool>())
+    )
     {
         return;
     }
@@ -309,7 +315,8 @@ void Foam::functionObjects::fiberTracking::progress(const bool last)
 
 void Foam::functionObjects::fiberTracking::liveProgress()
 {
-    if (cpuFibers_ - cpuProgress_ < 60)
+    // One decision for all processors (reportCost is collective)
+    if (!returnReduce(cpuFibers_ - cpuProgress_ >= 60, orOp<bool>()))
     {
         return;
     }
