@@ -19,6 +19,8 @@ License
 #include "addToRunTimeSelectionTable.H"
 
 #include <ctime>
+#include <cmath>
+#include <string>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -349,7 +351,8 @@ void Foam::functionObjects::fiberTracking::reportCost() const
         }
         const label j = 1 + subStepStatistics::nLimits;
         Info<< type() << " " << name() << " most sub-steps: fiber "
-            << label(r[0]) << ", " << n << " ("
+            << label(r[0]) << ", " << std::to_string(std::llround(n)).c_str()
+            << " ("
             << subStepStatistics::name(lMax, rule).c_str() << " "
             << 0.1*std::round(1000*r[1 + lMax]/max(n, scalar(1)))
             << " %), at (" << r[j] << ' ' << r[j + 1] << ' ' << r[j + 2]

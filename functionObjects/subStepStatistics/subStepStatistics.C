@@ -16,6 +16,7 @@ License
 #include "PstreamCombineReduceOps.H"
 #include "Ostream.H"
 #include <cmath>
+#include <string>
 
 // * * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * //
 
@@ -161,16 +162,21 @@ void Foam::subStepStatistics::report
 ) const
 {
     const scalar total = n();
-    os  << total << " sub-steps, bound by";
+    // Counts as whole numbers, every digit (beyond the stream's precision)
+    auto count = [](const scalar n)
+    {
+        return std::to_string(std::llround(n));
+    };
+    os  << count(total).c_str() << " sub-steps, bound by";
     for (label l = 0; l < nLimits; ++l)
     {
-        os  << (l ? ", " : " ") << name(l, ruleName).c_str() << ' ' << n_[l]
-            << " (" << (total > 0 ? 0.1*std::round(1000*n_[l]/total) : 0)
-            << " %)";
+        os  << (l ? ", " : " ") << name(l, ruleName).c_str() << ' '
+            << count(n_[l]).c_str() << " ("
+            << (total > 0 ? 0.1*std::round(1000*n_[l]/total) : 0) << " %)";
     }
     os  << "; median " << median() << " s, smallest " << hMin()
         << " s (" << name(hMinLimit_, ruleName).c_str() << "); rebounds "
-        << nRebounds_;
+        << count(nRebounds_).c_str();
 }
 
 
