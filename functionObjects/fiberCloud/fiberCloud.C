@@ -595,7 +595,6 @@ void Foam::fiberCloud::finish
     }
     nSegmentSteps_ += f.nSegments();
     dispersion_->elapse(f, h);
-    dtSubMin_ = min(dtSubMin_, h);
     ++nSub_[fi];
     f.countSubStep(why);
     stepStats_.add(why, h);
@@ -1233,7 +1232,6 @@ Foam::fiberCloud::fiberCloud
     dt_(0),
     restarted_(restart != nullptr),
     nSubMax_(0),
-    dtSubMin_(0),
     nRemote_(0),
     nTransferred_(0),
     nOnward_(0),
@@ -1557,7 +1555,6 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     nOnwardStep_ = 0;
 
     hydro_.resetCounters();
-    dtSubMin_ = dt;
 
     // A moving mesh carries the stored locations with it: bring each back
     // to its fiber's centre
@@ -1607,7 +1604,6 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
         nSubMax = max(nSubMax, n);
     }
     nSubMax_ = returnReduce(nSubMax, maxOp<label>());
-    dtSubMin_ = returnReduce(dtSubMin_, minOp<scalar>());
     nRemote_ = returnReduce(sampler_.nRemote(), sumOp<label>());
     nOutside_ = returnReduce(sampler_.nOutside(), sumOp<label>());
     nInertial_ = returnReduce(hydro_.nInertial(), sumOp<label>());

@@ -329,7 +329,7 @@ void Foam::functionObjects::fiberTracking::liveProgress()
 
 void Foam::functionObjects::fiberTracking::reportCost() const
 {
-    const word rule(cloud_->control().ruleName());
+    const string rule(cloud_->control().ruleName());
     const subStepStatistics& st = cloud_->runStatistics();
     const scalarList top(cloud_->costliest());
     Info<< type() << " " << name() << " sub-steps so far: ";
