@@ -27,7 +27,8 @@ License
 Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
 :
     mesh_(mesh),
-    kind_(mesh.boundaryMesh().size(), patchKind::outlet)
+    kind_(mesh.boundaryMesh().size(), patchKind::outlet),
+    staticMesh_(true)
 {
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     forAll(pbm, patchi)
@@ -95,6 +96,51 @@ Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::fiberTracker::cached(const trackedPoint& tp) const
+{
+    if (!staticMesh_ || mesh_.changing())
+    {
+        staticMesh_ = false;
+        return false;
+    }
+    if (!tp.located())
+    {
+        return false;
+    }
+    trackedPoint::tetGeometry& c = tp.cache;
+    if
+    (
+        c.celli != tp.celli || c.tetFacei != tp.tetFacei
+     || c.tetPti != tp.tetPti
+    )
+    {
+        // The tetrahedron of particle's stationary walk: the cell centre
+        // and the triangle of the tet decomposition, and its reverse
+        // transform: the volume-scaled face normals opposite each vertex
+        c.tri = tp.tet().faceTriIs(mesh_);
+        const pointField& pts = mesh_.points();
+        c.A = barycentricTensor
+        (
+            mesh_.cellCentres()[tp.celli],
+            pts[c.tri[0]],
+            pts[c.tri[1]],
+            pts[c.tri[2]]
+        );
+        const vector ab(c.A.b() - c.A.a());
+        const vector ac(c.A.c() - c.A.a());
+        const vector ad(c.A.d() - c.A.a());
+        const vector bc(c.A.c() - c.A.b());
+        const vector bd(c.A.d() - c.A.b());
+        c.detA = ab & (ac ^ ad);
+        c.T = barycentricTensor(bd ^ bc, ac ^ ad, ad ^ ab, ab ^ ac);
+        c.celli = tp.celli;
+        c.tetFacei = tp.tetFacei;
+        c.tetPti = tp.tetPti;
+    }
+    return true;
+}
+
 
 bool Foam::fiberTracker::cross
 (
@@ -244,9 +290,23 @@ Foam::labelList Foam::fiberTracker::outletPatches() const
 
 Foam::point Foam::fiberTracker::position(const trackedPoint& tp) const
 {
+    if (cached(tp))
+    {
+        return tp.cache.A & tp.coordinates;
+    }
     particle p(mesh_, tp.coordinates, tp.celli, tp.tetFacei, tp.tetPti);
     p.stepFraction() = 1;
     return p.position();
+}
+
+
+Foam::triFace Foam::fiberTracker::triangle(const trackedPoint& tp) const
+{
+    if (cached(tp))
+    {
+        return tp.cache.tri;
+    }
+    return tp.tet().faceTriIs(mesh_);
 }
 
 
@@ -277,6 +337,41 @@ Foam::fiberTracker::hit Foam::fiberTracker::track
     if (particle::particleCount_ > labelMax/2)
     {
         particle::particleCount_ = 0;
+    }
+
+    // Within the tetrahedron (no face of it reached): the new coordinates
+    // as particle::trackToStationaryTri computes them, from the cache
+    const trackedPoint::tetGeometry& c = tp.cache;
+    if
+    (
+        startFace < 0 && cached(tp) && std::isnormal(c.detA) && c.detA > 0
+    )
+    {
+        const barycentric Tx(d & c.T);
+        const scalar muH = 1/c.detA;
+        bool inside = true;
+        for (label i = 0; i < 4; ++i)
+        {
+            if (std::isnormal(Tx[i]) && Tx[i] < 0)
+            {
+                const scalar mu = -tp.coordinates[i]/Tx[i];
+                if (0 <= mu && mu < muH)
+                {
+                    inside = false;
+                }
+            }
+        }
+        if (inside)
+        {
+            barycentric y(tp.coordinates + muH*Tx);
+            for (label i = 0; i < 4; ++i)
+            {
+                y.replace(i, max(0, y[i]));
+            }
+            y /= cmptSum(y);
+            tp.coordinates = y;
+            return h;
+        }
     }
 
     vector disp(d);

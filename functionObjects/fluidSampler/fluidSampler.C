@@ -21,13 +21,34 @@ namespace
 
 using namespace Foam;
 
+//- The interpolation of scheme for psi: fluidSampler's cellPoint (the
+//  same numbers, its values in view) for cellPoint, else the run-time
+//  selected one
 template<class Type>
-const interpolationCellPoint<Type>* cellPointOf
+autoPtr<interpolation<Type>> interpolator
+(
+    const word& scheme,
+    const GeometricField<Type, fvPatchField, volMesh>& psi
+)
+{
+    if (scheme == interpolationCellPoint<Type>::typeName)
+    {
+        return autoPtr<interpolation<Type>>
+        (
+            new fluidSampler::cellPoint<Type>(psi)
+        );
+    }
+    return interpolation<Type>::New(scheme, psi);
+}
+
+
+template<class Type>
+const fluidSampler::cellPoint<Type>* cellPointOf
 (
     const autoPtr<interpolation<Type>>& ip
 )
 {
-    return ip.valid() ? isA<interpolationCellPoint<Type>>(ip()) : nullptr;
+    return ip.valid() ? isA<fluidSampler::cellPoint<Type>>(ip()) : nullptr;
 }
 
 } // End anonymous namespace
@@ -81,26 +102,14 @@ void Foam::fluidSampler::interpolate
 
     if (UCellPoint_)
     {
-        s.U = UCellPoint_->interpolationCellPoint<vector>::interpolate(w, tet);
+        const triFace tri(tracker_.triangle(tp));
+        s.U = UCellPoint_->value(w, tp.celli, tri);
         // fvc::grad(U) holds du_j/dx_i; G_ij = du_i/dx_j
-        s.G = gradUCellPoint_->interpolationCellPoint<tensor>::interpolate
-        (
-            w,
-            tet
-        ).T();
+        s.G = gradUCellPoint_->value(w, tp.celli, tri).T();
         if (kCellPoint_)
         {
-            s.k = kCellPoint_->interpolationCellPoint<scalar>::interpolate
-            (
-                w,
-                tet
-            );
-            s.epsilon =
-                epsilonCellPoint_->interpolationCellPoint<scalar>::interpolate
-                (
-                    w,
-                    tet
-                );
+            s.k = kCellPoint_->value(w, tp.celli, tri);
+            s.epsilon = epsilonCellPoint_->value(w, tp.celli, tri);
         }
     }
     else
@@ -133,13 +142,13 @@ void Foam::fluidSampler::update
     const volScalarField* epsilonPtr
 )
 {
-    UInterp_ = interpolation<vector>::New(scheme_, U);
-    gradUInterp_ = interpolation<tensor>::New(scheme_, gradU);
+    UInterp_ = interpolator(scheme_, U);
+    gradUInterp_ = interpolator(scheme_, gradU);
     mu_ = muCells;
     if (kPtr && epsilonPtr)
     {
-        kInterp_ = interpolation<scalar>::New(scheme_, *kPtr);
-        epsilonInterp_ = interpolation<scalar>::New(scheme_, *epsilonPtr);
+        kInterp_ = interpolator(scheme_, *kPtr);
+        epsilonInterp_ = interpolator(scheme_, *epsilonPtr);
     }
     else
     {

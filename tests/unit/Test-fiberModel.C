@@ -370,6 +370,31 @@ void testInertialDrag()
         );
     }
 
+    // The two forms meet at |b| l/2 = |a|/4: just below it Gauss-Legendre,
+    // just above it the exact antiderivatives (which cancel little there;
+    // b moved by 1e-14 changes the moments by less than 1e-15);
+    // both must give the same moments to near round-off
+    {
+        const vector a(0.3, -0.1, 0.05);
+        const vector bHat(vector(0.2, 0.9, -0.4)/mag(vector(0.2, 0.9, -0.4)));
+        const scalar bLimit = 0.25*mag(a)/(0.5*l);
+        scalar Mb[3], Ma[3];
+        inertialDrag::moments
+        (
+            a, (1 - 1e-14)*bLimit*bHat, l, Mb[0], Mb[1], Mb[2]
+        );
+        inertialDrag::moments
+        (
+            a, (1 + 1e-14)*bLimit*bHat, l, Ma[0], Ma[1], Ma[2]
+        );
+        scalar err = 0;
+        for (label k = 0; k < 3; ++k)
+        {
+            err = max(err, mag(Mb[k] - Ma[k])/(mag(a)*std::pow(l, k + 1)));
+        }
+        check("inertialDrag.formsMeetAtSwitch", err < 1e-13, fmt(err, 0, err));
+    }
+
     // Pure translation and pure rotation closed forms (physics.md 3.4)
     {
         const vector a(0.3, -0.2, 0);
