@@ -21,6 +21,21 @@ License
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
 #include "globalMeshData.H"
+#include "registerSwitch.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+int Foam::fiberTracker::tetCache
+(
+    Foam::debug::optimisationSwitch("fiberTrackerTetCache", 1)
+);
+
+registerOptSwitch
+(
+    "fiberTrackerTetCache",
+    int,
+    Foam::fiberTracker::tetCache
+);
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -28,8 +43,14 @@ Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
 :
     mesh_(mesh),
     kind_(mesh.boundaryMesh().size(), patchKind::outlet),
-    staticMesh_(true)
+    staticMesh_(tetCache != 0)
 {
+    if (!tetCache)
+    {
+        Info<< "fiberTracker: tetrahedron cache off"
+            << " (OptimisationSwitches fiberTrackerTetCache 0)" << endl;
+    }
+
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     forAll(pbm, patchi)
     {
@@ -97,7 +118,7 @@ Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-bool Foam::fiberTracker::cached(const trackedPoint& tp) const
+bool Foam::fiberTracker::fillCache(const trackedPoint& tp) const
 {
     if (!staticMesh_ || mesh_.changing())
     {

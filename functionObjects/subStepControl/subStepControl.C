@@ -30,7 +30,7 @@ Foam::subStepControl::subStepControl(const dictionary& dict)
     mode_(mode::tolerance),
     shearStepFactor_(keywordCheck::positive(dict, "shearStepFactor", 0.1)),
     tolerance_(keywordCheck::positive(dict, "tolerance", 0.1)),
-    maxRotation_(keywordCheck::positive(dict, "maxRotation", 0.2)),
+    maxRotation_(keywordCheck::positive(dict, "maxRotation", 0.1)),
     maxCo_(keywordCheck::positive(dict, "maxCo", 1))
 {
     const word m(dict.getOrDefault<word>("subStepControl", "tolerance"));
@@ -90,14 +90,16 @@ Foam::scalar Foam::subStepControl::tipSpeed
     const vector& w
 )
 {
-    scalar u = 0;
+    // In the body frame: |w x (R x0)| = |(R^T w) x x0|
+    const vector wb(w & R);
+    scalar u2 = 0;
     for (label i = 0; i < f.nSegments(); ++i)
     {
-        const vector r(f.segmentOffset(R, i));
-        const vector a((0.5*f.segmentLength(i))*f.segmentDirection(R, i));
-        u = max(u, max(mag(w ^ (r + a)), mag(w ^ (r - a))));
+        const vector& r = f.bodyOffset(i);
+        const vector a((0.5*f.segmentLength(i))*f.bodyDirection(i));
+        u2 = max(u2, max(magSqr(wb ^ (r + a)), magSqr(wb ^ (r - a))));
     }
-    return u;
+    return ::sqrt(u2);
 }
 
 

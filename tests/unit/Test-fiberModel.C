@@ -1529,8 +1529,8 @@ void testStepControl()
     dictionary dict;
     dict.add("integrator", "implicitEuler");
     autoPtr<fiberIntegrator> integ(fiberIntegrator::New(dict));
-    // The default: the tolerance control, tolerance 0.1 (the stability
-    // map below runs at it)
+    // The default: the tolerance control, tolerance 0.1 and maxRotation
+    // 0.1 (the stability map below runs at it)
     const subStepControl tol{dictionary()};
     // The tolerance control at 3e-3, the default before ensembles judged
     dictionary fineDict;
@@ -1551,6 +1551,7 @@ void testStepControl()
             "stepControl.paperRuleIsEq22",
             tol.control() == subStepControl::mode::tolerance
          && tol.tolerance() == 0.1
+         && tol.maxRotation() == 0.1
          && paper.control() == subStepControl::mode::paper
          && paper.shearStepFactor() == 0.1
          && relErr(rate, ref) < 1e-12,
@@ -1694,7 +1695,9 @@ void testStepControl()
                     controlledStep(f, uniform, si(), air, tol, z*tau);
                 nMax = max(nMax, n);
                 const scalar v = f.velocity().x();
-                // BDF2 may overshoot by its documented 0.6 %
+                // BDF2 overshoots a relaxation (2.9 % at most with
+                // constant steps, docs/numerics.md); the control's steps
+                // here keep it within 0.6 %
                 ok = ok && std::isfinite(v)
                     && v >= vPrev - (scheme == "BDF2" ? 6e-3 : 1e-12)
                     && v < (scheme == "BDF2" ? 1.006 : 1 + 1e-12);
