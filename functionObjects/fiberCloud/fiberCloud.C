@@ -532,8 +532,29 @@ bool Foam::fiberCloud::prepare
     {
         FatalErrorInFunction
             << "Fiber " << f.id() << " needs " << parts
-            << " sub-steps over " << T << " s"
-            << exit(FatalError);
+            << " sub-steps over " << T << " s, at " << f.position()
+            << " in cell " << f.location().celli << ": asked for by ";
+        if (why == subStepStatistics::cell)
+        {
+            FatalError
+                << "the cell limit (entry 'maxCo' " << control_.maxCo()
+                << ", cell length " << cellLength_[f.location().celli]
+                << " m)";
+        }
+        else if (control_.control() == subStepControl::mode::paper)
+        {
+            FatalError
+                << "Eq. 22 (entry 'shearStepFactor' "
+                << control_.shearStepFactor() << ")";
+        }
+        else
+        {
+            FatalError
+                << "the tolerance control (entries 'tolerance' "
+                << control_.tolerance() << ", 'maxRotation' "
+                << control_.maxRotation() << ")";
+        }
+        FatalError << exit(FatalError);
     }
     // Round-off tolerant: a count that is an integer up to round-off
     // (uniform shear) must not flip to the next one
@@ -1303,7 +1324,32 @@ Foam::fiberCloud::fiberCloud
 
     if (restart)
     {
-        readRestart(*restart);
+        // A file cut short (a run killed while writing it) fails deep in
+        // the stream's readers: caught here and said in its terms
+        const bool throwing = FatalError.throwExceptions(true);
+        const bool throwingIO = FatalIOError.throwExceptions(true);
+        string why;
+        try
+        {
+            readRestart(*restart);
+        }
+        catch (const Foam::error& e)
+        {
+            why = e.message();
+        }
+        FatalError.throwExceptions(throwing);
+        FatalIOError.throwExceptions(throwingIO);
+        if (why.size())
+        {
+            FatalIOErrorInFunction(*restart)
+                << "The fiber restart file " << restart->name()
+                << " is incomplete or damaged (" << why.c_str() << ")."
+                << nl << "    The fiber state of this time cannot be read:"
+                << " the run that wrote it may have stopped while writing."
+                << " Start from an earlier write time (startFrom startTime;"
+                << " startTime <an earlier time>), or remove the file to"
+                << " inject the fibers anew" << exit(FatalIOError);
+        }
         return;
     }
 

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberSizes.H"
+#include "Pair.H"
 #include "counterRandom.H"
 #include "keywordCheck.H"
 #include "spheroidResistance.H"
@@ -55,6 +56,29 @@ void Foam::fiberSizes::readEntry(const dictionary& dict, const label i)
                 << "Entry '" << key << "': the " << type << " distribution"
                 << " needs 0 < minValue <= maxValue, not minValue " << lo
                 << ", maxValue " << hi << exit(FatalIOError);
+        }
+    }
+    // Shape parameters that must be positive (the models take any value:
+    // a negative variance gave a normal that is not one)
+    static const List<Pair<word>> positive
+    ({
+        {"normal", "variance"},
+        {"RosinRammler", "d"}, {"RosinRammler", "n"},
+        {"massRosinRammler", "d"}, {"massRosinRammler", "n"},
+        {"exponential", "lambda"}
+    });
+    for (const Pair<word>& p : positive)
+    {
+        if (p.first() == type && coeffs.found(p.second()))
+        {
+            const scalar v = coeffs.get<scalar>(p.second());
+            if (!(v > 0))
+            {
+                FatalIOErrorInFunction(d)
+                    << "Entry '" << key << "': the " << type
+                    << " distribution needs a positive '" << p.second()
+                    << "', not " << v << exit(FatalIOError);
+            }
         }
     }
     dist_[i] = distributionModel::New(d, rnd_);

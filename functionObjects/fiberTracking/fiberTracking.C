@@ -16,6 +16,9 @@ License
 #include "OSspecific.H"
 #include "fvcGrad.H"
 #include "transportModel.H"
+#include "turbulenceModel.H"
+#include "fvOptions.H"
+#include "fiberMomentumSource.H"
 #include "addToRunTimeSelectionTable.H"
 
 #include <ctime>
@@ -67,10 +70,41 @@ public:
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::word Foam::functionObjects::fiberTracking::modelWithoutK
+(
+    const dictionary& turbulence
+)
+{
+    // turbulenceProperties' own keywords (not entries of this object)
+    const word simulationType("simulationType");
+    const word type
+    (
+        turbulence.getOrDefault<word>(simulationType, "laminar")
+    );
+    if (type == "laminar")
+    {
+        return "laminar";
+    }
+    const word model
+    (
+        turbulence.subOrEmptyDict(type).getOrDefault<word>
+        (
+            type + "Model", word::null
+        )
+    );
+    // The Spalart-Allmaras family transports nuTilda only: no k
+    if (model.starts_with("SpalartAllmaras"))
+    {
+        return model;
+    }
+    return word::null;
+}
+
+
 void Foam::functionObjects::fiberTracking::checkFields
 (
     const dictionary& dict
-) const
+)
 {
     if (!mesh_.foundObject<volVectorField>(UName_))
     {
@@ -87,34 +121,96 @@ void Foam::functionObjects::fiberTracking::checkFields
             << exit(FatalIOError);
     }
 
-    if (cloud_->dispersion().active())
+    kFromModel_ = false;
+    if (!cloud_->dispersion().active())
     {
-        wordList missing;
-        for (const word& fld : {kName_, epsilonName_})
+        return;
+    }
+
+    // The solver's turbulence model, unless fields are named
+    const turbulenceModel* tm =
+        mesh_.findObject<turbulenceModel>(turbulenceModel::propertiesName);
+    const bool named = dict.found("k") || dict.found("epsilon");
+    const word noK(tm ? modelWithoutK(*tm) : word::null);
+    if (tm && !named && noK.empty())
+    {
+        kFromModel_ = true;
+        Info<< type() << " " << name() << ": k and epsilon of the random"
+            << " walk from the turbulence model of the case" << endl;
+        return;
+    }
+    if (tm && !named)
+    {
+        // Fields called k and epsilon may be left over from another model
+        FatalIOErrorInFunction(dict)
+            << "Entry 'dispersion " << dict.get<word>("dispersion")
+            << "' needs k and epsilon: the turbulence model of the case ("
+            << noK << ") has no turbulence kinetic energy k." << nl
+            << "    The random walk needs a model that has (k-epsilon,"
+            << " k-omega, k-omega SST, realizable k-epsilon, ...), or"
+            << " fields named with entries 'k' and 'epsilon'." << nl
+            << "    Use 'dispersion none' for a laminar case"
+            << exit(FatalIOError);
+    }
+
+    wordList missing;
+    for (const word& fld : {kName_, epsilonName_})
+    {
+        const bool onDisk =
+            IOobject
+            (
+                fld, time_.timeName(), mesh_, IOobject::MUST_READ
+            ).typeHeaderOk<volScalarField>(true);
+        if (!mesh_.foundObject<volScalarField>(fld) && !onDisk)
         {
-            const bool onDisk =
-                IOobject
-                (
-                    fld, time_.timeName(), mesh_, IOobject::MUST_READ
-                ).typeHeaderOk<volScalarField>(true);
-            if (!mesh_.foundObject<volScalarField>(fld) && !onDisk)
-            {
-                missing.append(fld);
-            }
-        }
-        if (missing.size())
-        {
-            FatalIOErrorInFunction(dict)
-                << "Entry 'dispersion " << dict.get<word>("dispersion")
-                << "' needs the turbulence fields (k epsilon); missing: "
-                << missing << nl
-                << "    No turbulence model provides them and they are not"
-                << " in " << time_.timePath() << "." << nl
-                << "    Use 'dispersion none' for a laminar case, or name"
-                << " the fields with entries 'k' and 'epsilon'"
-                << exit(FatalIOError);
+            missing.append(fld);
         }
     }
+    if (missing.size())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'dispersion " << dict.get<word>("dispersion")
+            << "' needs the turbulence fields (k epsilon); missing: "
+            << missing << nl
+            << "    They are neither fields of the case nor in "
+            << time_.timePath() << ", and no turbulence model gives them."
+            << nl
+            << "    Use 'dispersion none' for a laminar case, or name"
+            << " the fields with entries 'k' and 'epsilon'"
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::functionObjects::fiberTracking::checkCouplingSource() const
+{
+    if (!cloud_->coupling())
+    {
+        return;
+    }
+    const fv::options* opts =
+        mesh_.findObject<fv::options>(fv::options::typeName);
+    if (opts)
+    {
+        const fv::optionList& list = *opts;
+        forAll(list, i)
+        {
+            const fv::fiberMomentumSource* src =
+                isA<fv::fiberMomentumSource>(list[i]);
+            if (src && src->fiberTracking() == name())
+            {
+                return;
+            }
+        }
+    }
+    FatalIOErrorInFunction(dict_)
+        << "Entry 'coupled': the fibers of '" << name() << "' act on the"
+        << " fluid only through an fvOption, and none names them: the run"
+        << " would be one-way." << nl
+        << "    Add to system/fvOptions (or constant/fvOptions):" << nl
+        << "    fiberDrag { type fiberMomentumSource; fiberTracking "
+        << name() << "; }" << nl
+        << "    or set 'coupled false'" << exit(FatalIOError);
 }
 
 
@@ -183,7 +279,18 @@ void Foam::functionObjects::fiberTracking::updateFields()
     const volVectorField& U = lookupObject<volVectorField>(UName_);
     gradU_ = fvc::grad(U);
 
-    if (cloud_->dispersion().active())
+    if (cloud_->dispersion().active() && kFromModel_)
+    {
+        const turbulenceModel& tm =
+            lookupObject<turbulenceModel>(turbulenceModel::propertiesName);
+        kModel_ = tm.k();
+        epsilonModel_ = tm.epsilon();
+        cloud_->sampler().update
+        (
+            U, gradU_(), muCells(), &kModel_(), &epsilonModel_()
+        );
+    }
+    else if (cloud_->dispersion().active())
     {
         cloud_->sampler().update
         (
@@ -562,6 +669,8 @@ Foam::functionObjects::fiberTracking::fiberTracking
     duration_(0),
     outputInterval_(0),
     started_(false),
+    sourceChecked_(false),
+    statesAtWriteTimes_(!dict.found("writeControl")),
     cpuFibers_(0),
     cpuProgress_(0),
     dict_(dict),
@@ -569,6 +678,9 @@ Foam::functionObjects::fiberTracking::fiberTracking
     gradU_(),
     kDisk_(),
     epsilonDisk_(),
+    kFromModel_(false),
+    kModel_(),
+    epsilonModel_(),
     stateFilePtr_(),
     depositFilePtr_(),
     outletFilePtr_(),
@@ -940,6 +1052,12 @@ bool Foam::functionObjects::fiberTracking::execute()
           ? timePerIteration_
           : time_.value() - fiberTime_;
 
+        if (!sourceChecked_)
+        {
+            sourceChecked_ = true;
+            const errorsEndTheRun guard;
+            checkCouplingSource();
+        }
         if (dt > 0)
         {
             updateFields();
@@ -1033,6 +1151,12 @@ bool Foam::functionObjects::fiberTracking::write()
 {
     // Post-processing writes its states in execute()
     if (functionObject::postProcess)
+    {
+        return true;
+    }
+
+    // By default at the case's write times, as OpenFOAM's clouds write
+    if (statesAtWriteTimes_ && !time_.writeTime())
     {
         return true;
     }

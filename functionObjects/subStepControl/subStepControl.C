@@ -33,6 +33,33 @@ Foam::subStepControl::subStepControl(const dictionary& dict)
     maxRotation_(keywordCheck::positive(dict, "maxRotation", 0.1)),
     maxCo_(keywordCheck::positive(dict, "maxCo", 1))
 {
+    // Limits so fine that no run could finish: refused before the first
+    // step (each asks for 1e4 times the sub-steps of the value the paper
+    // or the default uses, or more)
+    struct lowest { const char* key; scalar value; scalar min;
+        const char* per; };
+    const lowest limits[] =
+    {
+        {"shearStepFactor", shearStepFactor_, 1e-5,
+            "per shear time of a fiber (the paper: 0.1)"},
+        {"tolerance", tolerance_, 1e-5,
+            "per unit of path or turn error (the default: 0.1)"},
+        {"maxRotation", maxRotation_, 1e-5,
+            "per radian the fluid's strain turns a fiber (the default: 0.1)"},
+        {"maxCo", maxCo_, 1e-4, "per cell a fiber crosses (the default: 1)"}
+    };
+    for (const lowest& l : limits)
+    {
+        if (l.value < l.min && dict.found(l.key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry '" << l.key << "' " << l.value << " asks for "
+                << 1/l.value << " sub-steps or more " << l.per
+                << "; the smallest accepted is " << l.min
+                << exit(FatalIOError);
+        }
+    }
+
     const word m(dict.getOrDefault<word>("subStepControl", "tolerance"));
     if (!modeNames.found(m))
     {
@@ -61,6 +88,7 @@ Foam::subStepControl::subStepControl(const dictionary& dict)
                 << exit(FatalIOError);
         }
     }
+
 }
 
 
