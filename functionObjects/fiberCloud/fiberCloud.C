@@ -1092,6 +1092,7 @@ void Foam::fiberCloud::release
         {
             continue;
         }
+        feed.prepare(mesh_);
 
         // Fiber k0 + j keeps its size; its place is drawn again until the
         // whole fiber lies in the mesh (so the sizes released follow the

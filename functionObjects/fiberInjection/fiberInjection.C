@@ -337,7 +337,7 @@ void Foam::fiberInjection::read
                 wordList
                 ({
                     "patch", "start", "duration", "fibersPerSecond",
-                    "direction", "velocity"
+                    "direction", "velocity", "placement", "phi"
                 })
             );
         }

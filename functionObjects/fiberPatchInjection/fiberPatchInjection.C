@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberPatchInjection.H"
+#include "surfaceFields.H"
 #include "counterRandom.H"
 #include "keywordCheck.H"
 #include "Pstream.H"
@@ -28,29 +29,44 @@ void Foam::fiberPatchInjection::gatherPatch(const polyMesh& mesh)
     const pointField& pts = mesh.points();
     DynamicList<FixedList<point, 3>> myTri;
     DynamicList<vector> myN;
+    DynamicList<scalar> myShare;
+    DynamicList<label> myFace;
     forAll(pp, i)
     {
         const face& f = pp[i];
         const point& c = pp.faceCentres()[i];
-        const vector n(pp.faceAreas()[i]/mag(pp.faceAreas()[i]));
+        const scalar magA = mag(pp.faceAreas()[i]);
+        const vector n(pp.faceAreas()[i]/magA);
         forAll(f, k)
         {
-            myTri.append
-            (
-                FixedList<point, 3>({c, pts[f[k]], pts[f.nextLabel(k)]})
-            );
+            const FixedList<point, 3> t({c, pts[f[k]], pts[f.nextLabel(k)]});
+            myTri.append(t);
             myN.append(n);
+            myShare.append(0.5*mag((t[1] - t[0]) ^ (t[2] - t[0]))/magA);
+            myFace.append(i);
         }
     }
 
     List<List<FixedList<point, 3>>> allTri(Pstream::nProcs());
     List<vectorList> allN(Pstream::nProcs());
+    List<scalarList> allShare(Pstream::nProcs());
+    List<labelList> allFace(Pstream::nProcs());
+    labelList nFaces(Pstream::nProcs(), Zero);
     allTri[Pstream::myProcNo()] = myTri;
     allN[Pstream::myProcNo()] = myN;
+    allShare[Pstream::myProcNo()] = myShare;
+    allFace[Pstream::myProcNo()] = myFace;
+    nFaces[Pstream::myProcNo()] = pp.size();
     Pstream::gatherList(allTri);
     Pstream::scatterList(allTri);
     Pstream::gatherList(allN);
     Pstream::scatterList(allN);
+    Pstream::gatherList(allShare);
+    Pstream::scatterList(allShare);
+    Pstream::gatherList(allFace);
+    Pstream::scatterList(allFace);
+    Pstream::gatherList(nFaces);
+    Pstream::scatterList(nFaces);
 
     label n = 0;
     for (const List<FixedList<point, 3>>& t : allTri)
@@ -60,7 +76,10 @@ void Foam::fiberPatchInjection::gatherPatch(const polyMesh& mesh)
     List<FixedList<point, 3>> tri(n);
     vectorList nrm(n);
     List<point> centroid(n);
+    scalarList share(n);
+    labelList gFace(n);
     n = 0;
+    label offset = 0;
     forAll(allTri, proci)
     {
         forAll(allTri[proci], i)
@@ -69,8 +88,11 @@ void Foam::fiberPatchInjection::gatherPatch(const polyMesh& mesh)
             tri[n] = t;
             nrm[n] = allN[proci][i];
             centroid[n] = (t[0] + t[1] + t[2])/3;
+            share[n] = allShare[proci][i];
+            gFace[n] = offset + allFace[proci][i];
             ++n;
         }
+        offset += nFaces[proci];
     }
 
     // A decomposition-independent order: by centroid, x then y then z
@@ -92,14 +114,61 @@ void Foam::fiberPatchInjection::gatherPatch(const polyMesh& mesh)
     tri_.setSize(n);
     normal_.setSize(n);
     cdf_.setSize(n);
+    areaShare_.setSize(n);
+    gatheredFace_.setSize(n);
     scalar sum = 0;
     forAll(order, i)
     {
         const FixedList<point, 3>& t = tri[order[i]];
         tri_[i] = t;
         normal_[i] = nrm[order[i]];
+        areaShare_[i] = share[order[i]];
+        gatheredFace_[i] = gFace[order[i]];
         sum += 0.5*mag((t[1] - t[0]) ^ (t[2] - t[0]));
         cdf_[i] = sum;
+    }
+}
+
+
+void Foam::fiberPatchInjection::weighByFlux(const polyMesh& mesh)
+{
+    const surfaceScalarField* phiPtr =
+        mesh.findObject<surfaceScalarField>(phiName_);
+    if (!phiPtr)
+    {
+        FatalErrorInFunction
+            << "Fiber set '" << name_ << "' (placement flux): no flux field '"
+            << phiName_ << "' in the case (entry 'phi')" << exit(FatalError);
+    }
+
+    // The patch's face fluxes of all processors, in processor order
+    List<scalarList> allPhi(Pstream::nProcs());
+    allPhi[Pstream::myProcNo()] = phiPtr->boundaryField()[patchi_];
+    Pstream::gatherList(allPhi);
+    Pstream::scatterList(allPhi);
+    DynamicList<scalar> phi;
+    for (const scalarList& p : allPhi)
+    {
+        phi.append(p);
+    }
+
+    // Inflow only (phi < 0 points into the domain), each triangle its
+    // share of its face's
+    scalar sum = 0;
+    forAll(cdf_, i)
+    {
+        sum += max(-phi[gatheredFace_[i]], scalar(0))*areaShare_[i];
+        cdf_[i] = sum;
+    }
+    if (!(sum > 0))
+    {
+        FatalErrorInFunction
+            << "Fiber set '" << name_ << "' (placement flux): no flow enters"
+            << " the domain through patch '"
+            << mesh.boundaryMesh()[patchi_].name() << "' at time "
+            << mesh.time().timeName() << ": the fibers due cannot be placed"
+            << " by flux (placement area places them anyway)"
+            << exit(FatalError);
     }
 }
 
@@ -128,6 +197,8 @@ Foam::fiberPatchInjection::fiberPatchInjection
     U0_(setDict.getOrDefault<vector>("velocity", Zero)),
     free_(freeDirections),
     sizes_(setDict),
+    byFlux_(false),
+    phiName_(setDict.getOrDefault<word>("phi", "phi")),
     nReleased_(0),
     nRedrawn_(0)
 {
@@ -174,6 +245,21 @@ Foam::fiberPatchInjection::fiberPatchInjection
         }
     }
 
+    const word placement(setDict.getOrDefault<word>("placement", "area"));
+    if (placement != "area" && placement != "flux")
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entry 'placement': '" << placement << "' is neither area"
+            << " nor flux" << exit(FatalIOError);
+    }
+    byFlux_ = (placement == "flux");
+    if (!byFlux_ && setDict.found("phi"))
+    {
+        FatalIOErrorInFunction(setDict)
+            << "Entry 'phi' has no effect with placement area; remove it or"
+            << " set placement flux" << exit(FatalIOError);
+    }
+
     gatherPatch(mesh);
     if (cdf_.empty() || !(cdf_.last() > 0))
     {
@@ -190,11 +276,25 @@ Foam::fiberPatchInjection::fiberPatchInjection
     {
         Info<< ", sizes drawn per fiber";
     }
+    if (byFlux_)
+    {
+        Info<< ", placed by the inflow through its faces (" << phiName_
+            << ")";
+    }
     Info<< endl;
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fiberPatchInjection::prepare(const polyMesh& mesh)
+{
+    if (byFlux_)
+    {
+        weighByFlux(mesh);
+    }
+}
+
 
 Foam::label Foam::fiberPatchInjection::nDue(const scalar t) const
 {
