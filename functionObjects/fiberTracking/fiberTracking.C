@@ -318,6 +318,10 @@ void Foam::functionObjects::fiberTracking::advance
     cloud_->evolve(fiberTime_, dt);
     cpuFibers_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
     fiberTime_ += dt;
+    if (cellFields_.valid())
+    {
+        cellFields_->add(cloud_->fibers(), dt);
+    }
 
     writeStatistics();
     if (logLine)
@@ -708,7 +712,7 @@ void Foam::functionObjects::fiberTracking::checkKeywords
         "shearStepFactor", "tolerance", "maxRotation", "maxCo",
         "gravity", "jefferyCorrection", "dispersion", "wallInteraction",
         "restitution", "timePerIteration", "duration", "outputInterval",
-        "vtk", "eventLog", "coupled", "buoyancy",
+        "vtk", "eventLog", "coupled", "buoyancy", "cellFields",
         "injection",
         "functionObjectLibs", "region", "enabled", "log", "timeStart",
         "timeEnd", "executeControl", "executeInterval", "writeControl",
@@ -925,6 +929,23 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
         checkFields(dict);
     }
 
+    if (dict.getOrDefault<Switch>("cellFields", false))
+    {
+        if (functionObject::postProcess)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'cellFields' is for live runs (fields at the"
+                << " case's write times); post-processing writes none:"
+                << " remove it" << exit(FatalIOError);
+        }
+        cellFields_.reset(new fiberCellFields(mesh_, name()));
+        Info<< "    Per-cell fields at write times: "
+            << cellFields_->fieldName("fiberNumberDensity") << ", "
+            << cellFields_->fieldName("fiberVolumeFraction") << ", "
+            << cellFields_->fieldName("fiberOrientation") << ", "
+            << cellFields_->fieldName("fiberVelocity") << endl;
+    }
+
     if (Pstream::master() && writeToFile())
     {
         OFstream& os = file();
@@ -1068,6 +1089,10 @@ bool Foam::functionObjects::fiberTracking::execute()
         {
             writeRestart();
             writeVtk(time_.timeName());
+            if (cellFields_.valid())
+            {
+                cellFields_->write();
+            }
         }
         return true;
     }
