@@ -1,20 +1,27 @@
 # fiberTracking: read the fibers' VTK series with ParaView's own reader,
 # report what is in it, and draw a picture.  Run with pvbatch (under
 # xvfb-run where there is no display):
-#   pvbatch scripts/fiberView.py <series> <time> <png> [case.foam]
-# Prints one line per time step of the series: time, segments (cells),
-# fibers (distinct fiberId) and, per fiber, id and fiberVelocity of its
-# first segment (lines 'fiber <t> <id> <vx> <vy> <vz>').  With case.foam,
-# the picture shows the fibers over the outline of the case's mesh, each
-# segment as a line glyph along the fiber, 2 % of the domain long, seen from
-# the side; without it, the segments themselves.  Colour: p_z.
+#   pvbatch scripts/fiberView.py <series> <times> <png> [case.foam]
+# <times>: one time, or several separated by commas (drawn together, the
+# later ones over the earlier).  Prints one line per time step of the
+# series: time, segments (cells), fibers (distinct fiberId) and, per fiber,
+# id and fiberVelocity of its first segment (lines 'fiber <t> <id> <vx>
+# <vy> <vz>').  With case.foam, the picture shows the fibers over the
+# case's walls cut by the mid-plane normal to x (its edges), each segment
+# as a line glyph along the fiber, 2 % of the domain long, seen from the
+# side; without it, the segments themselves.  Colour: |p_z|, the
+# alignment with z (the diffuser's axis).
 import sys
 from paraview.simple import (OpenDataFile, Show, Render, GetActiveViewOrCreate,
                              ColorBy, SaveScreenshot, Outline, ResetCamera,
-                             Glyph, CellCenters)
+                             Glyph, CellCenters, Slice, FeatureEdges,
+                             Calculator, ForceTime, GetColorTransferFunction,
+                             ExtractSurface)
 from paraview import servermanager as sm
 
-series, tPic, png = sys.argv[1], float(sys.argv[2]), sys.argv[3]
+series, png = sys.argv[1], sys.argv[3]
+tPics = [float(t) for t in sys.argv[2].split(',')]
+tPic = tPics[-1]
 foam = sys.argv[4] if len(sys.argv) > 4 else None
 
 reader = OpenDataFile(series)
@@ -45,15 +52,33 @@ if foam:
     mesh.UpdatePipeline()
     b = mesh.GetDataInformation().GetBounds()
     size = ((b[1] - b[0])**2 + (b[3] - b[2])**2 + (b[5] - b[4])**2)**0.5
-    Show(Outline(Input=mesh), view)
-    glyph = Glyph(Input=CellCenters(Input=reader), GlyphType='Line')
-    glyph.OrientationArray = ['POINTS', 'orientation']
-    glyph.ScaleArray = ['POINTS', 'No scale array']
-    glyph.ScaleFactor = 0.02*size
-    glyph.GlyphMode = 'All Points'
-    shown = Show(glyph, view)
-    shown.LineWidth = 2
-    ColorBy(shown, ('POINTS', 'orientation', 'Z'))
+    # The walls in the mid-plane: the edges of the mesh cut at x = centre
+    cut = Slice(Input=mesh)
+    cut.SliceType.Origin = [0.5*(b[0] + b[1]), 0.5*(b[2] + b[3]),
+                            0.5*(b[4] + b[5])]
+    cut.SliceType.Normal = [1, 0, 0]
+    edges = Show(FeatureEdges(Input=ExtractSurface(Input=cut)), view)
+    ColorBy(edges, None)
+    edges.AmbientColor = edges.DiffuseColor = [0, 0, 0]
+    edges.LineWidth = 2
+    lut = GetColorTransferFunction('alignment')
+    for t in tPics:
+        at = ForceTime(Input=reader)
+        at.ForcedTime = t
+        at.IgnorePipelineTime = 1
+        align = Calculator(Input=CellCenters(Input=at))
+        align.ResultArrayName = 'alignment'
+        align.Function = 'abs(orientation_Z)'
+        glyph = Glyph(Input=align, GlyphType='Line')
+        glyph.OrientationArray = ['POINTS', 'orientation']
+        glyph.ScaleArray = ['POINTS', 'No scale array']
+        glyph.ScaleFactor = 0.02*size
+        glyph.GlyphMode = 'All Points'
+        shown = Show(glyph, view)
+        shown.LineWidth = 2
+        ColorBy(shown, ('POINTS', 'alignment'))
+    lut.RescaleTransferFunction(0.0, 1.0)
+    shown.SetScalarBarVisibility(view, True)
     view.CameraPosition = [b[1] + 2*size, 0.5*(b[2] + b[3]),
                            0.5*(b[4] + b[5])]
     view.CameraFocalPoint = [0.5*(b[0] + b[1]), 0.5*(b[2] + b[3]),
@@ -63,7 +88,7 @@ else:
     shown = Show(reader, view)
     shown.LineWidth = 3
     ColorBy(shown, ('CELLS', 'orientation', 'Z'))
-shown.RescaleTransferFunctionToDataRange(True)
+    shown.RescaleTransferFunctionToDataRange(True)
 ResetCamera(view)
 Render(view)
 SaveScreenshot(png, view, ImageResolution=[1000, 700])
