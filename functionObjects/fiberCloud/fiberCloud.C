@@ -609,9 +609,25 @@ void Foam::fiberCloud::finish
     }
     if (coupling_.valid())
     {
+        // The part of a change of the fluid velocity at the step's start
+        // that the fiber's translation has not followed yet (implicit
+        // Euler).  A fiber within one cell enters the implicit part with
+        // its drag's true sensitivity K u; a fiber across cells with K,
+        // which also damps the force couple it answers the strain with
+        // (fiberCoupling)
+        scalar sumK = 0;
+        bool oneCell = true;
         forAll(s, i)
         {
-            coupling_->add(s[i], forces_.F[i], forces_.K[i], h);
+            sumK += forces_.K[i];
+            oneCell =
+                oneCell && s[i].cell == s[0].cell && s[i].proc == s[0].proc;
+        }
+        unfollowed_[fi] /= 1 + h*sumK/f.mass();
+        const scalar r = oneCell ? unfollowed_[fi] : 1;
+        forAll(s, i)
+        {
+            coupling_->add(s[i], forces_.F[i], r*forces_.K[i], h);
         }
     }
     nSegmentSteps_ += f.nSegments();
@@ -918,6 +934,7 @@ void Foam::fiberCloud::transfer()
         {
             os  << toPatch_[fi] << token::SPACE << toFace_[fi]
                 << token::SPACE << tLeft_[fi] << token::SPACE << nSub_[fi]
+                << token::SPACE << unfollowed_[fi]
                 << token::SPACE << fibers_[fi];
             status_[fi] = status::gone;
             ++nSentStep_;
@@ -940,6 +957,7 @@ void Foam::fiberCloud::transfer()
             const label face = readLabel(is);
             const scalar tLeft = readScalar(is);
             const label nSub = readLabel(is);
+            const scalar unfollowed = readScalar(is);
             autoPtr<fiber> fPtr(new fiber(is));
 
             const processorPolyPatch& pp = tracker_.processorPatch(patch);
@@ -952,6 +970,7 @@ void Foam::fiberCloud::transfer()
             status_.append(tLeft > 0 ? status::running : status::done);
             tLeft_.append(tLeft);
             nSub_.append(nSub);
+            unfollowed_.append(unfollowed);
             toProc_.append(-1);
             toPatch_.append(-1);
             toFace_.append(-1);
@@ -994,6 +1013,7 @@ void Foam::fiberCloud::compact()
                 status_[n] = status_[fi];
                 tLeft_[n] = tLeft_[fi];
                 nSub_[n] = nSub_[fi];
+                unfollowed_[n] = unfollowed_[fi];
                 toProc_[n] = toProc_[fi];
                 toPatch_[n] = toPatch_[fi];
                 toFace_[n] = toFace_[fi];
@@ -1005,6 +1025,7 @@ void Foam::fiberCloud::compact()
     status_.setSize(n);
     tLeft_.setSize(n);
     nSub_.setSize(n);
+    unfollowed_.setSize(n);
     toProc_.setSize(n);
     toPatch_.setSize(n);
     toFace_.setSize(n);
@@ -1214,7 +1235,13 @@ Foam::fiberCloud::fiberCloud
     coupling_
     (
         dict.getOrDefault<Switch>("coupled", false)
-      ? new fiberCoupling(mesh, dict.dictName(), rhoFluid)
+      ? new fiberCoupling
+        (
+            mesh,
+            dict.dictName(),
+            rhoFluid,
+            dict.getOrDefault<word>("U", "U")
+        )
       : nullptr
     ),
     buoyancy_(dict.getOrDefault<Switch>("buoyancy", false)),
@@ -1587,6 +1614,8 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     }
     nSub_.setSize(nF);
     nSub_ = 0;
+    unfollowed_.setSize(nF);
+    unfollowed_ = 1;
     toProc_.setSize(nF);
     toProc_ = -1;
     toPatch_.setSize(nF);

@@ -19,7 +19,8 @@ Foam::fiberCoupling::fiberCoupling
 (
     const fvMesh& mesh,
     const word& name,
-    const scalar rho
+    const scalar rho,
+    const word& UName
 )
 :
     mesh_(mesh),
@@ -55,7 +56,22 @@ Foam::fiberCoupling::fiberCoupling
         dimensionedScalar(inv(dimTime), Zero)
     ),
     fluidForce_(Zero),
-    fiberForce_(Zero)
+    fiberForce_(Zero),
+    UName_(UName),
+    linearised_
+    (
+        IOobject
+        (
+            linearisedName(name),
+            word::null,
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        ),
+        mesh,
+        dimensionedVector(dimVelocity, Zero)
+    ),
+    returned_(Zero)
 {}
 
 
@@ -105,6 +121,20 @@ void Foam::fiberCoupling::finish(const scalar dt)
     vectorField& S = force_.field();
     scalarField& beta = dragRate_.field();
     fluidForce_ = Zero;
+    returned_ = Zero;
+
+    // The implicit part of the flow step just taken, beta (U* - U), gave
+    // the fluid what the fibers' drag would have become had they not
+    // followed the change; they did follow, and their impulses hold the
+    // change of their drag again.  Return it in the next source, so that
+    // the fluid gets, over the steps, what the fibers gave up
+    vectorField back;
+    const volVectorField* UPtr = mesh_.findObject<volVectorField>(UName_);
+    if (UPtr && linearised_.instance() == mesh_.time().timeName())
+    {
+        back = beta*(UPtr->primitiveField() - linearised_.field());
+    }
+
     if (dt > 0)
     {
         forAll(S, celli)
@@ -119,8 +149,18 @@ void Foam::fiberCoupling::finish(const scalar dt)
     {
         fiberForce_ = Zero;
     }
+    if (back.size())
+    {
+        S += back;
+        forAll(back, celli)
+        {
+            returned_ += rho_*V[celli]*back[celli];
+        }
+        linearised_.instance() = word::null;
+    }
     reduce(fluidForce_, sumOp<vector>());
     reduce(fiberForce_, sumOp<vector>());
+    reduce(returned_, sumOp<vector>());
 
     impulse_ = Zero;
     coeff_ = Zero;

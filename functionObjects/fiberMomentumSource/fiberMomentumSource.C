@@ -105,6 +105,17 @@ void Foam::fv::fiberMomentumSource::addSup
     const volVectorField& U = eqn.psi();
     eqn += S + beta*U.internalField();
     eqn -= fvm::Sp(beta, U);
+
+    // The velocity linearised about (the last call of a flow step wins),
+    // stamped with the time: the coupling returns the implicit part after
+    // the step (fiberCoupling)
+    vectorDField& UStar =
+        mesh_.lookupObjectRef<vectorDField>
+        (
+            fiberCoupling::linearisedName(fiberTracking_)
+        );
+    UStar.field() = U.primitiveField();
+    UStar.instance() = mesh_.time().timeName();
 }
 
 

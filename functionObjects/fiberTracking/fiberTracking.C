@@ -587,7 +587,13 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
         {
             os << tab << F[k];
         }
-        os  << tab << mag(S + F)/max(mag(F), VSMALL) << endl;
+        os  << tab << mag(S + F)/max(mag(F), VSMALL);
+        const vector& R = cloud_->coupling()->returned();
+        for (direction k = 0; k < 3; ++k)
+        {
+            os << tab << R[k];
+        }
+        os  << endl;
     }
 
     // Events since the last call
@@ -1016,7 +1022,8 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
             (
                 os,
                 "Time fluidSource_x fluidSource_y fluidSource_z fiberForce_x"
-                " fiberForce_y fiberForce_z mismatch"
+                " fiberForce_y fiberForce_z mismatch returned_x returned_y"
+                " returned_z"
             );
             os << endl;
         }
@@ -1068,10 +1075,19 @@ bool Foam::functionObjects::fiberTracking::execute()
 {
     if (!functionObject::postProcess)
     {
-        const scalar dt =
+        // The flow's step where the fiber time keeps up with it: a run
+        // restarted from a write time reads that time rounded to its name,
+        // and the difference of the two clocks would then differ from the
+        // uninterrupted run's in the last bits (and could take a sub-step
+        // more)
+        scalar dt =
             steady_
           ? timePerIteration_
           : time_.value() - fiberTime_;
+        if (!steady_ && mag(dt - time_.deltaTValue()) < 1e-9*dt)
+        {
+            dt = time_.deltaTValue();
+        }
 
         if (!sourceChecked_)
         {
