@@ -352,7 +352,7 @@ Foam::fiberTracker::hit Foam::fiberCloud::locateSegment
     typedef fiberTracker::stop stop;
     const fiberTracker::hit here
     {
-        stop::none, -1, Zero, false, vectorTensorTransform::I
+        stop::none, -1, Zero, false, vectorTensorTransform::I, false
     };
     const trackedPoint& centre = f.location();
     trackedPoint& cached = f.segmentLocations()[i];
@@ -671,6 +671,15 @@ void Foam::fiberCloud::centreMoved
     {
         case fiberTracker::stop::none:
         {
+            if (c.slid && !c.crossed)
+            {
+                // Across a sliding interface the location may have ended
+                // within the sides' mismatch of where the fiber is: back
+                // to the fiber, as near as the mesh holds it
+                fiber& f = fibers_[fi];
+                trackedPoint& loc = f.location();
+                tracker_.track(loc, f.position() - tracker_.position(loc));
+            }
             break;
         }
         case fiberTracker::stop::processor:
@@ -1721,7 +1730,11 @@ void Foam::fiberCloud::checkLocations() const
         const fiber& f = fibers_[fi];
         const scalar off =
             mag(tracker_.position(f.location()) - f.position());
-        if (off > 1e-6*f.length())
+        if
+        (
+            off > 1e-6*f.length()
+         && off > tracker_.mismatch(f.location())
+        )
         {
             FatalErrorInFunction
                 << "Fiber " << f.id() << ": its mesh location is "

@@ -95,21 +95,26 @@ void Foam::fiberPatchInjection::gatherPatch(const polyMesh& mesh)
         offset += nFaces[proci];
     }
 
-    // A decomposition-independent order: by centroid, x then y then z
-    labelList order(identity(n));
-    std::sort
-    (
-        order.begin(),
-        order.end(),
-        [&centroid](const label a, const label b)
-        {
-            const point& pa = centroid[a];
-            const point& pb = centroid[b];
-            if (pa.x() != pb.x()) return pa.x() < pb.x();
-            if (pa.y() != pb.y()) return pa.y() < pb.y();
-            return pa.z() < pb.z();
-        }
-    );
+    // A decomposition-independent order: by centroid, x then y then z, as
+    // the patch was first gathered (a moving patch keeps it)
+    if (order_.size() != n)
+    {
+        order_ = identity(n);
+        std::sort
+        (
+            order_.begin(),
+            order_.end(),
+            [&centroid](const label a, const label b)
+            {
+                const point& pa = centroid[a];
+                const point& pb = centroid[b];
+                if (pa.x() != pb.x()) return pa.x() < pb.x();
+                if (pa.y() != pb.y()) return pa.y() < pb.y();
+                return pa.z() < pb.z();
+            }
+        );
+    }
+    const labelList& order = order_;
 
     tri_.setSize(n);
     normal_.setSize(n);
@@ -289,6 +294,11 @@ Foam::fiberPatchInjection::fiberPatchInjection
 
 void Foam::fiberPatchInjection::prepare(const polyMesh& mesh)
 {
+    // A moving patch: place where it is now
+    if (mesh.moving())
+    {
+        gatherPatch(mesh);
+    }
     if (byFlux_)
     {
         weighByFlux(mesh);

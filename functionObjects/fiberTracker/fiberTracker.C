@@ -14,6 +14,7 @@ License
 #include "particle.H"
 #include "cyclicPolyPatch.H"
 #include "cyclicAMIPolyPatch.H"
+#include "cyclicACMIPolyPatch.H"
 #include "processorPolyPatch.H"
 #include "wallPolyPatch.H"
 #include "symmetryPolyPatch.H"
@@ -43,6 +44,7 @@ Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
 :
     mesh_(mesh),
     kind_(mesh.boundaryMesh().size(), patchKind::outlet),
+    acmiOf_(mesh.boundaryMesh().size(), -1),
     staticMesh_(tetCache != 0)
 {
     if (!tetCache)
@@ -59,6 +61,10 @@ Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
         if (isA<processorPolyPatch>(pp))
         {
             k = patchKind::processor;
+        }
+        else if (isA<cyclicACMIPolyPatch>(pp))
+        {
+            k = patchKind::cyclicACMI;
         }
         else if (isA<cyclicAMIPolyPatch>(pp))
         {
@@ -85,6 +91,19 @@ Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
         }
     }
 
+    // The non-overlap patches of the ACMI patches
+    forAll(pbm, patchi)
+    {
+        if (kind_[patchi] == patchKind::cyclicACMI)
+        {
+            acmiOf_
+            [
+                refCast<const cyclicACMIPolyPatch>(pbm[patchi])
+               .nonOverlapPatchID()
+            ] = patchi;
+        }
+    }
+
     // The tet base points are built collectively: on every processor now,
     // not on the first that happens to track
     (void)mesh_.tetBasePtIs();
@@ -94,7 +113,11 @@ Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
     // requires)
     forAll(pbm, patchi)
     {
-        if (kind_[patchi] != patchKind::cyclicAMI)
+        if
+        (
+            kind_[patchi] != patchKind::cyclicAMI
+         && kind_[patchi] != patchKind::cyclicACMI
+        )
         {
             continue;
         }
@@ -163,7 +186,7 @@ bool Foam::fiberTracker::fillCache(const trackedPoint& tp) const
 }
 
 
-bool Foam::fiberTracker::cross
+void Foam::fiberTracker::cross
 (
     trackedPoint& tp,
     const label facei,
@@ -173,30 +196,6 @@ bool Foam::fiberTracker::cross
 {
     const polyPatch& pp =
         mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(facei)];
-
-    if (isA<cyclicAMIPolyPatch>(pp))
-    {
-        const cyclicAMIPolyPatch& cpp = refCast<const cyclicAMIPolyPatch>(pp);
-        const cyclicAMIPolyPatch& rcv = cpp.neighbPatch();
-
-        point pos(position(tp));
-        const label rf = cpp.pointFace(facei - cpp.start(), d, pos);
-        if (rf < 0)
-        {
-            return false;
-        }
-        const vectorTensorTransform Tf(receiving(rcv, rf));
-        if (Tf.hasR())
-        {
-            d = Tf.R() & d;
-        }
-        // From the receiving cell's centre to the mapped point, then on
-        atCellCentre(mesh_.faceOwner()[rcv.start() + rf], tp);
-        d += pos - position(tp);
-        T = after(Tf, T);
-        return true;
-    }
-
     const cyclicPolyPatch& cpp = refCast<const cyclicPolyPatch>(pp);
     const cyclicPolyPatch& rcv = cpp.neighbPatch();
     const label local = facei - cpp.start();
@@ -215,7 +214,111 @@ bool Foam::fiberTracker::cross
         d = Tf.R() & d;
     }
     T = after(Tf, T);
+}
+
+
+bool Foam::fiberTracker::crossAMI
+(
+    trackedPoint& tp,
+    const label facei,
+    vector& d,
+    vectorTensorTransform& T,
+    label& onFace
+) const
+{
+    const cyclicAMIPolyPatch& cpp =
+        refCast<const cyclicAMIPolyPatch>
+        (
+            mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(facei)]
+        );
+    const cyclicAMIPolyPatch& rcv = cpp.neighbPatch();
+
+    point pos(position(tp));
+    const label rf = cpp.pointFace(facei - cpp.start(), d, pos);
+    if (rf < 0)
+    {
+        return false;
+    }
+    T = receiving(rcv, rf);
+    if (T.hasR())
+    {
+        d = T.R() & d;
+    }
+
+    // The mapped point, reached from the receiving cell's centre; it lies
+    // on the receiving face, so the walk may stop on that face (or on a
+    // neighbouring face of the interface) by round-off: it landed there
+    atCellCentre(mesh_.faceOwner()[rcv.start() + rf], tp);
+    onFace = -1;
+    walk(tp, pos - position(tp), onFace);
     return true;
+}
+
+
+bool Foam::fiberTracker::acmiCouples
+(
+    const trackedPoint& tp,
+    const label facei,
+    const vector& d
+) const
+{
+    const cyclicACMIPolyPatch& cpp =
+        refCast<const cyclicACMIPolyPatch>
+        (
+            mesh_.boundaryMesh()[mesh_.boundaryMesh().whichPatch(facei)]
+        );
+    const label local = facei - cpp.start();
+    const scalar mask = cpp.mask()[local];
+    if (mask >= 1 - cpp.tolerance())
+    {
+        return true;
+    }
+    if (mask <= cpp.tolerance())
+    {
+        return false;
+    }
+    // Partly overlapped: the AMI takes a near miss of the other side's
+    // faces for a hit (pointFace), which would carry a point of the
+    // blocked part across; it couples only where its line meets a face of
+    // the other side
+    point pos(position(tp));
+    const label rf = cpp.pointFace(local, d, pos);
+    if (rf < 0)
+    {
+        return false;
+    }
+    const cyclicAMIPolyPatch& nbr = cpp.neighbPatch();
+    return
+        nbr[rf].ray(pos, d, nbr.points(), intersection::FULL_RAY).hit();
+}
+
+
+void Foam::fiberTracker::stepOff(trackedPoint& tp, const scalar frac)
+{
+    // The tetrahedron's first vertex is the cell centre
+    tp.coordinates =
+        (1 - frac)*tp.coordinates + frac*barycentric(1, 0, 0, 0);
+}
+
+
+Foam::scalar Foam::fiberTracker::walk
+(
+    trackedPoint& tp,
+    const vector& d,
+    label& onFace
+) const
+{
+    particle p(mesh_, tp.coordinates, tp.celli, tp.tetFacei, tp.tetPti);
+    p.stepFraction() = 1;
+    p.face() = onFace;
+    const scalar f = p.track(d, 0);
+
+    tp.coordinates = p.coordinates();
+    tp.celli = p.cell();
+    tp.tetFacei = p.tetFace();
+    tp.tetPti = p.tetPt();
+    onFace = p.onBoundaryFace() ? p.face() : -1;
+    return f;
 }
 
 
@@ -321,6 +424,42 @@ Foam::point Foam::fiberTracker::position(const trackedPoint& tp) const
 }
 
 
+Foam::scalar Foam::fiberTracker::mismatch(const trackedPoint& tp) const
+{
+    scalar m = 0;
+    if (!tp.located())
+    {
+        return m;
+    }
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    for (const label facei : mesh_.cells()[tp.celli])
+    {
+        if (mesh_.isInternalFace(facei))
+        {
+            continue;
+        }
+        label patchi = pbm.whichPatch(facei);
+        if (acmiOf_[patchi] >= 0)
+        {
+            patchi = acmiOf_[patchi];
+        }
+        if
+        (
+            kind_[patchi] == patchKind::cyclicAMI
+         || kind_[patchi] == patchKind::cyclicACMI
+        )
+        {
+            // The face's own size (an ACMI face's area is scaled by its
+            // mask): from its points
+            const scalar a =
+                mag(mesh_.faces()[facei].areaNormal(mesh_.points()));
+            m = max(m, 0.1*sqrt(a));
+        }
+    }
+    return m;
+}
+
+
 Foam::triFace Foam::fiberTracker::triangle(const trackedPoint& tp) const
 {
     if (cached(tp))
@@ -352,7 +491,7 @@ Foam::fiberTracker::hit Foam::fiberTracker::track
     const label startFace
 ) const
 {
-    hit h{stop::none, -1, Zero, false, vectorTensorTransform::I};
+    hit h{stop::none, -1, Zero, false, vectorTensorTransform::I, false};
 
     // particle counts its constructions in a label
     if (particle::particleCount_ > labelMax/2)
@@ -395,60 +534,150 @@ Foam::fiberTracker::hit Foam::fiberTracker::track
         }
     }
 
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     vector disp(d);
     label onFace = startFace;
+
+    // Crossings of sliding interfaces (AMI without a transform): the end
+    // intended, in the frame of the last crossing
+    bool slid = false;
+    point intended(Zero);
+
+    // The face the last AMI crossing landed on (-1: none), and the unit
+    // normal, out of the sending cell, of the face it left
+    label landed = -1;
+    vector nSent(Zero);
+
+    // The end: after sliding crossings, on from the mapped point to the
+    // end intended, stopping at the interface (or any boundary face)
+    auto ended = [&]() -> hit
+    {
+        if (slid)
+        {
+            label of = onFace;
+            walk(tp, intended - position(tp), of);
+        }
+        return h;
+    };
+
     for (label n = 0; n <= maxCrossings; ++n)
     {
-        particle p(mesh_, tp.coordinates, tp.celli, tp.tetFacei, tp.tetPti);
-        p.stepFraction() = 1;
-        p.face() = onFace;
-        const scalar f = p.track(disp, 0);
-
-        tp.coordinates = p.coordinates();
-        tp.celli = p.cell();
-        tp.tetFacei = p.tetFace();
-        tp.tetPti = p.tetPt();
-
-        if (!p.onBoundaryFace() || f <= 0)
+        const scalar f = walk(tp, disp, onFace);
+        if (onFace < 0 || f <= 0)
         {
-            return h;
+            return ended();
         }
 
-        const label facei = p.face();
+        label facei = onFace;
         disp *= f;
-        const patchKind k = kind_[mesh_.boundaryMesh().whichPatch(facei)];
-        switch (k)
+        label patchi = pbm.whichPatch(facei);
+
+        // A face of a non-overlap patch coincides with the ACMI face of
+        // the same index (the same points: the tetrahedron holds)
+        if (acmiOf_[patchi] >= 0)
         {
-            case patchKind::cyclic:
-            case patchKind::cyclicAMI:
+            const label acmi = acmiOf_[patchi];
+            facei += pbm[acmi].start() - pbm[patchi].start();
+            patchi = acmi;
+            tp.tetFacei = facei;
+            onFace = facei;
+        }
+        patchKind k = kind_[patchi];
+        if (k == patchKind::cyclicACMI)
+        {
+            if (acmiCouples(tp, facei, disp))
             {
-                if (!cross(tp, facei, disp, h.T))
-                {
-                    h.where = stop::outlet;
-                    h.face = facei;
-                    h.left = disp;
-                    return h;
-                }
-                h.crossed = true;
-                onFace = (k == patchKind::cyclic ? tp.tetFacei : -1);
-                break;
+                k = patchKind::cyclicAMI;
             }
-            case patchKind::inside:
+            else
             {
-                return h;
-            }
-            default:
-            {
-                h.where =
-                    k == patchKind::wall ? stop::wall
-                  : k == patchKind::symmetry ? stop::symmetry
-                  : k == patchKind::processor ? stop::processor
-                  : stop::outlet;
-                h.face = facei;
-                h.left = disp;
-                return h;
+                // The blocked part: the non-overlap patch
+                const label no =
+                    refCast<const cyclicACMIPolyPatch>(pbm[patchi])
+                   .nonOverlapPatchID();
+                facei += pbm[no].start() - pbm[patchi].start();
+                patchi = no;
+                tp.tetFacei = facei;
+                onFace = facei;
+                k = kind_[no];
             }
         }
+
+        if (k == patchKind::cyclic)
+        {
+            cross(tp, facei, disp, h.T);
+            h.crossed = true;
+            slid = false;
+            landed = -1;
+            onFace = tp.tetFacei;
+            continue;
+        }
+        if (k == patchKind::cyclicAMI)
+        {
+            if (facei == landed && f > 1 - 1e-9)
+            {
+                // Landed on the interface and at once back at it: moving
+                // along it, or back across.  The two sides' faces differ
+                // in direction by their mismatch; a displacement outward
+                // of both by less than that moves along the interface: on
+                // along this side's face (the end is corrected after)
+                const vector nR(normalised(mesh_.faceAreas()[facei]));
+                const scalar out = disp & nR;
+                if (out <= (2*mag(nSent + nR) + 1e-9)*mag(disp))
+                {
+                    if (out > 0)
+                    {
+                        disp -= out*nR;
+                    }
+                    stepOff(tp, 1e-9);
+                    onFace = -1;
+                    landed = -1;
+                    continue;
+                }
+            }
+            const point here(position(tp));
+            nSent = normalised(mesh_.faceAreas()[facei]);
+            const vector left(disp);
+            vectorTensorTransform Tf;
+            if (!crossAMI(tp, facei, disp, Tf, onFace))
+            {
+                // No face on the other side: mirrored
+                h.where = stop::symmetry;
+                h.face = facei;
+                h.left = left;
+                return h;
+            }
+            landed = onFace;
+            if (Tf.hasR())
+            {
+                nSent = Tf.R() & nSent;
+            }
+            if (!Tf.hasR() && magSqr(Tf.t()) == 0)
+            {
+                slid = true;
+                h.slid = true;
+                intended = here + left;
+            }
+            else
+            {
+                h.T = after(Tf, h.T);
+                h.crossed = true;
+                slid = false;
+            }
+            continue;
+        }
+        if (k == patchKind::inside)
+        {
+            return ended();
+        }
+        h.where =
+            k == patchKind::wall ? stop::wall
+          : k == patchKind::symmetry ? stop::symmetry
+          : k == patchKind::processor ? stop::processor
+          : stop::outlet;
+        h.face = facei;
+        h.left = disp;
+        return h;
     }
 
     FatalErrorInFunction
@@ -471,7 +700,10 @@ Foam::fiberTracker::hit Foam::fiberTracker::locate
         if (seed < 0)
         {
             tp = trackedPoint();
-            return hit{stop::outlet, -1, Zero, false, vectorTensorTransform::I};
+            return hit
+            {
+                stop::outlet, -1, Zero, false, vectorTensorTransform::I, false
+            };
         }
     }
     atCellCentre(seed, tp);

@@ -183,7 +183,8 @@ bool Foam::fluidSampler::sample
     if (h.where == stop::processor)
     {
         tracker_.processorAddress(h.face, req.proc, req.patch, req.face);
-        req.p = tracker_.position(tp) + h.left;
+        req.p = tracker_.position(tp);
+        req.d = h.left;
         return false;
     }
 
@@ -250,7 +251,8 @@ void Foam::fluidSampler::exchange
             for (const label k : index[proci])
             {
                 os  << reqs[k].patch << token::SPACE << reqs[k].face
-                    << token::SPACE << reqs[k].p;
+                    << token::SPACE << reqs[k].p << token::SPACE
+                    << reqs[k].d;
             }
         }
     }
@@ -274,27 +276,26 @@ void Foam::fluidSampler::exchange
         {
             label patch, face;
             point p;
-            is >> patch >> face >> p;
+            vector d;
+            is >> patch >> face >> p >> d;
             const processorPolyPatch& pp = tracker_.processorPatch(patch);
             const vectorTensorTransform T
             (
                 fiberTracker::receiving(pp, face)
             );
+            // The point on the face, reached from the cell behind it (it
+            // may stop on the face by round-off), then on along the line
             trackedPoint tp;
+            tracker_.locate(T.transformPosition(p), tp, pp.faceCells()[face]);
             fiberTracker::hit h =
-                tracker_.locate
-                (
-                    T.transformPosition(p),
-                    tp,
-                    pp.faceCells()[face]
-                );
+                tracker_.track(tp, T.hasR() ? (T.R() & d) : d);
             if (h.where == fiberTracker::stop::processor)
             {
                 // In a third processor's part: the data at the boundary
                 h.where = fiberTracker::stop::outlet;
             }
             sample(tp, h, result[k], dummy);
-            fiberTracker::hit back{h.where, -1, Zero, true, T};
+            fiberTracker::hit back{h.where, -1, Zero, true, T, false};
             toStartFrame(back, result[k]);
         }
         nRemote_ += n;
