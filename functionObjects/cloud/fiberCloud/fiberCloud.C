@@ -1,0 +1,554 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fiberCloud.H"
+#include "keywordCheck.H"
+#include "processorPolyPatch.H"
+#include "Switch.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::Enum<Foam::fiberCloud::wallRule>
+Foam::fiberCloud::wallRuleNames
+({
+    { wallRule::rebound, "rebound" },
+    { wallRule::deposit, "deposit" },
+});
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+// inertialDrag: auto (default), on or off (also true/false, yes/no)
+word inertialMode(const dictionary& dict)
+{
+    const word w(dict.getOrDefault<word>("inertialDrag", "auto"));
+    if (w == "auto")
+    {
+        return w;
+    }
+    const Switch sw(w, true);
+    if (!sw.valid())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'inertialDrag' must be auto, on or off, not '" << w
+            << "'" << exit(FatalIOError);
+    }
+    return sw ? "on" : "off";
+}
+
+
+word checkedScheme(const dictionary& dict)
+{
+    const word scheme
+    (
+        dict.getOrDefault<word>("interpolationScheme", "cellPoint")
+    );
+    if
+    (
+        !interpolation<vector>::dictionaryConstructorTablePtr_
+      ->found(scheme)
+    )
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "interpolationScheme",
+            scheme,
+            *interpolation<vector>::dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+    return scheme;
+}
+
+
+// Two-way coupling if 'coupled' (else null)
+fiberCoupling* couplingFrom
+(
+    const fvMesh& mesh,
+    const dictionary& dict,
+    const scalar rhoFluid
+)
+{
+    if (!dict.getOrDefault<Switch>("coupled", false))
+    {
+        return nullptr;
+    }
+    return new fiberCoupling
+    (
+        mesh,
+        dict.dictName(),
+        rhoFluid,
+        dict.getOrDefault<word>("U", "U")
+    );
+}
+
+
+// The hydrodynamic laws from the drag entries
+fiberHydrodynamics hydrodynamicsFrom
+(
+    const dictionary& dict,
+    const scalar rhoFluid
+)
+{
+    return fiberHydrodynamics
+    (
+        rhoFluid,
+        inertialMode(dict) != "off",
+        keywordCheck::positive(dict, "dragCoefficient", 1),
+        inertialMode(dict) == "auto"
+      ? keywordCheck::positive(dict, "inertialDragBound", 1e-3)
+      : 0,
+        dict.getOrDefault<Switch>("viscousDrag", true)
+    );
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fiberCloud::fiberCloud
+(
+    const fvMesh& mesh,
+    const dictionary& dict,
+    const scalar rhoFluid,
+    const vector& g,
+    Istream* restart
+)
+:
+    mesh_(mesh),
+    jeffery_(dict.getOrDefault<bool>("jefferyCorrection", false)),
+    coupling_(couplingFrom(mesh, dict, rhoFluid)),
+    buoyancy_(dict.getOrDefault<Switch>("buoyancy", false)),
+    hydro_(hydrodynamicsFrom(dict, rhoFluid)),
+    integrator_(fiberIntegrator::New(dict)),
+    dispersion_(fiberDispersion::New(dict)),
+    wallRule_(wallRule::rebound),
+    restitution_(dict.getOrDefault<scalar>("restitution", 1)),
+    g_(g),
+    control_(dict),
+    tracker_(mesh),
+    neighbours_(mesh),
+    sampler_(mesh, tracker_, neighbours_, checkedScheme(dict)),
+    constraint_(mesh),
+    counters_(tracker_.outletPatches(), mesh.boundaryMesh().size()),
+    interactions_(fiberInteraction::New(dict)),
+    tEnd_(0),
+    dt_(0),
+    tStopLeft_(0),
+    restarted_(restart != nullptr),
+    nSubMax_(0),
+    nRemote_(0),
+    nTransferred_(0),
+    nOnward_(0),
+    nOutside_(0),
+    nInertial_(0),
+    nInertialSkipped_(0),
+    nSegmentSteps_(0),
+    nRejected_(0),
+    nSentStep_(0),
+    nOnwardStep_(0)
+{
+    readWallRule(dict);
+    if (constraint_.active())
+    {
+        g_ = constraint_.constrain(g);
+        Info<< "    2-D case: fibers held in the plane (free directions "
+            << constraint_.freeDirections() << "), gravity " << g_ << endl;
+    }
+    control_.report(Info);
+    calcCellLength();
+
+    const dictionary& injectionDict = dict.subDict("injection");
+
+    PtrList<fiber> all;
+    List<fiberInjection::origin> origins;
+    wordList setNames;
+    fiberInjection::read
+    (
+        injectionDict,
+        all,
+        origins,
+        setNames,
+        feeds_,
+        constraint_.freeDirections(),
+        &mesh_,
+        restart != nullptr
+    );
+    counters_.setSets(setNames);
+
+    if (restart)
+    {
+        restartFrom(*restart);
+        return;
+    }
+    injectAtStart(dict, injectionDict, all, origins);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fiberCloud::readWallRule(const dictionary& dict)
+{
+    const word rule(dict.getOrDefault<word>("wallInteraction", "rebound"));
+    if (!wallRuleNames.found(rule))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'wallInteraction': unknown rule '" << rule
+            << "'; valid rules: " << wallRuleNames.sortedToc()
+            << exit(FatalIOError);
+    }
+    wallRule_ = wallRuleNames[rule];
+
+    if (restitution_ < 0 || restitution_ > 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'restitution' must lie in [0, 1], not " << restitution_
+            << exit(FatalIOError);
+    }
+    Info<< "    Wall interaction " << wallRuleNames[wallRule_];
+    if (wallRule_ == wallRule::rebound)
+    {
+        Info<< ", restitution " << restitution_;
+    }
+    Info<< endl;
+}
+
+
+void Foam::fiberCloud::restartFrom(Istream& is)
+{
+    // A file cut short (a run killed while writing it) fails deep in the
+    // stream's readers: caught here and said in its terms
+    const bool throwing = FatalError.throwExceptions(true);
+    const bool throwingIO = FatalIOError.throwExceptions(true);
+    string why;
+    try
+    {
+        readRestart(is);
+    }
+    catch (const Foam::error& e)
+    {
+        why = e.message();
+    }
+    FatalError.throwExceptions(throwing);
+    FatalIOError.throwExceptions(throwingIO);
+    if (why.size())
+    {
+        FatalIOErrorInFunction(is)
+            << "The fiber restart file " << is.name()
+            << " is incomplete or damaged (" << why.c_str() << ")."
+            << nl << "    The fiber state of this time cannot be read:"
+            << " the run that wrote it may have stopped while writing."
+            << " Start from an earlier write time (startFrom startTime;"
+            << " startTime <an earlier time>), or remove the file to"
+            << " inject the fibers anew" << exit(FatalIOError);
+    }
+}
+
+
+void Foam::fiberCloud::injectAtStart
+(
+    const dictionary& dict,
+    const dictionary& injectionDict,
+    PtrList<fiber>& all,
+    const List<fiberInjection::origin>& origins
+)
+{
+    labelList setIndex(all.size());
+    forAll(all, fi)
+    {
+        setIndex[fi] = all[fi].setIndex();
+    }
+    counters_.injectedAtStart(setIndex);
+
+    if (jeffery_)
+    {
+        forAll(all, fi)
+        {
+            if (!all[fi].jefferyCorrection())
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Entry 'jefferyCorrection' applies to straight"
+                    << " fibers only; fiber " << all[fi].id() << " is not"
+                    << exit(FatalIOError);
+            }
+        }
+        Info<< "    Jeffery correction: segment tumbling resistance and"
+            << " strain coupling scaled";
+        if (all.size())
+        {
+            Info<< " by " << all[0].alpha() << " (fiber 0)";
+        }
+        Info<< endl;
+    }
+
+    distribute(injectionDict, all, origins);
+
+    Info<< "    Injected " << counters_.nInjected() << " fibers" << endl;
+}
+
+
+void Foam::fiberCloud::calcCellLength()
+{
+    const scalarField& V = mesh_.V();
+    cellLength_.setSize(V.size());
+    if (constraint_.active())
+    {
+        // 2-D: the side of a square of the cell's area in the plane
+        const vector span(mesh_.bounds().span());
+        const vector& fr = constraint_.freeDirections();
+        scalar depth = 1;
+        label nFree = 0;
+        for (direction i = 0; i < vector::nComponents; ++i)
+        {
+            if (fr[i] > 0)
+            {
+                ++nFree;
+            }
+            else
+            {
+                depth *= span[i];
+            }
+        }
+        forAll(V, celli)
+        {
+            cellLength_[celli] =
+                std::pow(V[celli]/depth, 1.0/max(nFree, label(1)));
+        }
+    }
+    else
+    {
+        forAll(V, celli)
+        {
+            cellLength_[celli] = std::cbrt(V[celli]);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
+{
+    beginStep(t0, dt);
+    if (mesh_.moving())
+    {
+        followMesh();
+    }
+
+    // The intervals of the interaction model: at the end of each, every
+    // fiber of every processor is at the same time and the fibers act on
+    // each other ('none': one interval, no call)
+    const label nInt =
+        interactions_->active() ? interactions_->nIntervals(dt) : 1;
+    for (label k = 1; k <= nInt; ++k)
+    {
+        tStopLeft_ = k < nInt ? dt*scalar(nInt - k)/nInt : 0;
+        if (k > 1)
+        {
+            for (stepState& st : step_)
+            {
+                if (st.st == status::done && st.tLeft > tStopLeft_)
+                {
+                    st.st = status::running;
+                }
+            }
+        }
+        advance(tStopLeft_);
+        if (interactions_->active())
+        {
+            interactions_->interact(fibers_, tEnd_ - tStopLeft_);
+        }
+    }
+
+    endStep(dt);
+}
+
+
+void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
+{
+    tEnd_ = t0 + dt;
+    dt_ = dt;
+    sampler_.resetCounters();
+    stepStats_.clear();
+
+    if (events_.initialDue())
+    {
+        for (const fiber& f : fibers_)
+        {
+            events_.record(f, t0, fiberEventLog::injected, -1);
+        }
+    }
+
+    // The feeds' fibers due in this step, with the time each has left
+    const label nOld = fibers_.size();
+    DynamicList<scalar> tLeftNew;
+    if (feeds_.size() && dt > 0)
+    {
+        release(t0, tEnd_, tLeftNew);
+    }
+
+    // Every fiber's state in the step; a release at the step's end up to
+    // round-off takes no sub-step
+    const label nF = fibers_.size();
+    step_.setSize(nF);
+    for (label fi = 0; fi < nF; ++fi)
+    {
+        scalar tLeft = dt;
+        if (fi >= nOld)
+        {
+            tLeft = tLeftNew[fi - nOld] > 1e-9*dt ? tLeftNew[fi - nOld] : 0;
+        }
+        step_[fi] =
+            stepState
+            {
+                tLeft > 0 ? status::running : status::done,
+                tLeft, 0, 1, -1, -1, -1
+            };
+    }
+    counters_.beginStep();
+    nSentStep_ = 0;
+    nOnwardStep_ = 0;
+
+    hydro_.resetCounters();
+}
+
+
+void Foam::fiberCloud::followMesh()
+{
+    forAll(fibers_, fi)
+    {
+        fiber& f = fibers_[fi];
+        trackedPoint& loc = f.location();
+        centreMoved
+        (
+            fi,
+            tracker_.track(loc, f.position() - tracker_.position(loc))
+        );
+    }
+}
+
+
+void Foam::fiberCloud::advance(const scalar tStopLeft)
+{
+    tStopLeft_ = tStopLeft;
+    while (true)
+    {
+        forAll(fibers_, fi)
+        {
+            if (step_[fi].st == status::running)
+            {
+                runLocal(fi);
+            }
+        }
+        if (!Pstream::parRun())
+        {
+            break;
+        }
+        bool pending = false;
+        for (const stepState& st : step_)
+        {
+            pending =
+                pending || st.st == status::waiting
+             || st.st == status::moving;
+        }
+        if (!returnReduce(pending, orOp<bool>()))
+        {
+            break;
+        }
+        round();
+        transfer();
+    }
+}
+
+
+void Foam::fiberCloud::endStep(const scalar dt)
+{
+    label nSubMax = 0;
+    for (const stepState& st : step_)
+    {
+        nSubMax = max(nSubMax, st.nSub);
+    }
+    nSubMax_ = returnReduce(nSubMax, maxOp<label>());
+    nRemote_ = returnReduce(sampler_.nRemote(), sumOp<label>());
+    nOutside_ = returnReduce(sampler_.nOutside(), sumOp<label>());
+    nInertial_ = returnReduce(hydro_.nInertial(), sumOp<label>());
+    nInertialSkipped_ = returnReduce(hydro_.nSkipped(), sumOp<label>());
+    counters_.endStep();
+    nTransferred_ = returnReduce(nSentStep_, sumOp<label>());
+    nOnward_ = returnReduce(nOnwardStep_, sumOp<label>());
+    stepStats_.reduce();
+    runStats_ += stepStats_;
+    recordCostly();
+
+    if (coupling_.valid())
+    {
+        coupling_->finish(dt);
+    }
+
+    compact();
+    checkLocations();
+}
+
+
+void Foam::fiberCloud::compact()
+{
+    label n = 0;
+    forAll(fibers_, fi)
+    {
+        if (step_[fi].st != status::gone)
+        {
+            if (n != fi)
+            {
+                fibers_.set(n, fibers_.set(fi, nullptr));
+                step_[n] = step_[fi];
+            }
+            ++n;
+        }
+    }
+    fibers_.setSize(n);
+    step_.setSize(n);
+}
+
+
+void Foam::fiberCloud::checkLocations() const
+{
+    forAll(fibers_, fi)
+    {
+        const fiber& f = fibers_[fi];
+        const scalar off =
+            mag(tracker_.position(f.location()) - f.position());
+        if
+        (
+            off > 1e-6*f.length()
+         && off > tracker_.mismatch(f.location())
+        )
+        {
+            FatalErrorInFunction
+                << "Fiber " << f.id() << ": its mesh location is "
+                << off << " m off its centre " << f.position()
+                << " (fiber length " << f.length() << "): the tracking"
+                << " lost the fiber. Please report this case."
+                << exit(FatalError);
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,276 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+Description
+    fiberCloud: what the function object reports: orientation statistics,
+    states and segments gathered on the master, the counts per set, the
+    fibers with the most sub-steps.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fiberCloud.H"
+#include "fiberVtkWriter.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::fiberCloud::statistics Foam::fiberCloud::stats() const
+{
+    statistics s;
+    s.nInjected = counters_.nInjected();
+    s.nEscaped = counters_.nEscaped();
+    s.nDeposited = counters_.nDeposited();
+    s.nActive = fibers_.size();
+    s.absP = Zero;
+    s.pp = Zero;
+
+    forAll(fibers_, fi)
+    {
+        const vector p(fibers_[fi].orientation());
+        s.absP += cmptMag(p);
+        s.pp += sqr(p);
+    }
+
+    reduce(s.nActive, sumOp<label>());
+    reduce(s.absP, sumOp<vector>());
+    reduce(s.pp, sumOp<symmTensor>());
+
+    if (s.nActive > 0)
+    {
+        s.absP /= s.nActive;
+        s.pp /= s.nActive;
+    }
+    return s;
+}
+
+
+Foam::List<Foam::fiberCloud::state> Foam::fiberCloud::gatherStates() const
+{
+    List<state> local(fibers_.size());
+    forAll(fibers_, fi)
+    {
+        local[fi] = fiberEventLog::stateOf(fibers_[fi]);
+    }
+    return fiberEventLog::gatherSorted(local);
+}
+
+
+Foam::List<Foam::FixedList<Foam::label, 4>>
+Foam::fiberCloud::setCounts() const
+{
+    labelList active(counters_.setNames().size(), 0);
+    for (const fiber& f : fibers_)
+    {
+        ++active[f.setIndex()];
+    }
+    reduce(active, sumOp<labelList>());
+    return counters_.setCounts(active);
+}
+
+
+namespace Foam
+{
+    //- Merge packed records of costly fibers by id (the one with the most
+    //  sub-steps of each) and keep the n with the most, most first
+    static scalarList keepCostliest
+    (
+        const UList<scalar>& recs,
+        const label m,
+        const label n
+    )
+    {
+        auto nSub = [&](const label r)
+        {
+            scalar t = 0;
+            for (label l = 0; l < subStepStatistics::nLimits; ++l)
+            {
+                t += recs[m*r + 1 + l];
+            }
+            return t;
+        };
+        const label nRec = recs.size()/m;
+        DynamicList<label> keep;
+        for (label r = 0; r < nRec; ++r)
+        {
+            bool better = true;
+            for (label q = 0; q < nRec; ++q)
+            {
+                // A record of the same fiber with more sub-steps (or the
+                // same and earlier in the list) wins
+                if
+                (
+                    q != r && recs[m*q] == recs[m*r]
+                 && (nSub(q) > nSub(r) || (nSub(q) == nSub(r) && q < r))
+                )
+                {
+                    better = false;
+                    break;
+                }
+            }
+            if (better)
+            {
+                keep.append(r);
+            }
+        }
+        std::stable_sort
+        (
+            keep.begin(),
+            keep.end(),
+            [&](const label a, const label b) { return nSub(a) > nSub(b); }
+        );
+        keep.setSize(min(keep.size(), n));
+        scalarList out(m*keep.size());
+        forAll(keep, k)
+        {
+            for (label j = 0; j < m; ++j)
+            {
+                out[m*k + j] = recs[m*keep[k] + j];
+            }
+        }
+        return out;
+    }
+}
+
+
+void Foam::fiberCloud::recordCostly()
+{
+    const label m = costlySize;
+
+    // The nCostly fibers here with the most sub-steps (one pass)
+    FixedList<label, nCostly> top(-1);
+    FixedList<scalar, nCostly> topN(-1);
+    forAll(fibers_, fi)
+    {
+        scalar n = 0;
+        for (const scalar k : fibers_[fi].nSubSteps())
+        {
+            n += k;
+        }
+        label at = nCostly;
+        while (at > 0 && n > topN[at - 1])
+        {
+            --at;
+        }
+        if (at < nCostly)
+        {
+            for (label k = nCostly - 1; k > at; --k)
+            {
+                top[k] = top[k - 1];
+                topN[k] = topN[k - 1];
+            }
+            top[at] = fi;
+            topN[at] = n;
+        }
+    }
+
+    // With those kept from before (fibers gone since, or passed on)
+    DynamicList<scalar> recs(costly_);
+    for (const label fi : top)
+    {
+        if (fi < 0)
+        {
+            continue;
+        }
+        const fiber& f = fibers_[fi];
+        recs.append(f.id());
+        for (const scalar k : f.nSubSteps())
+        {
+            recs.append(k);
+        }
+        for (direction c = 0; c < 3; ++c)
+        {
+            recs.append(f.position()[c]);
+        }
+        recs.append(f.location().celli);
+        recs.append(tEnd_);
+    }
+    costly_ = keepCostliest(recs, m, nCostly);
+}
+
+
+Foam::scalarList Foam::fiberCloud::costliest() const
+{
+    List<scalarList> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = costly_;
+    Pstream::gatherList(all);
+    DynamicList<scalar> recs;
+    for (const scalarList& r : all)
+    {
+        recs.append(r);
+    }
+    return keepCostliest(recs, costlySize, nCostly);
+}
+
+
+Foam::scalarList Foam::fiberCloud::gatherSegments() const
+{
+    const label m = fiberVtkWriter::recordSize;
+    label n = 0;
+    for (const fiber& f : fibers_)
+    {
+        n += f.nSegments();
+    }
+    List<scalarList> all(Pstream::nProcs());
+    scalarList& rec = all[Pstream::myProcNo()];
+    rec.setSize(m*n);
+    label k = 0;
+    for (const fiber& f : fibers_)
+    {
+        const tensor R(f.R());
+        const vector p(f.orientation());
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            const vector r(f.segmentOffset(R, i));
+            const vector half
+            (
+                (0.5*f.segmentLength(i))*f.segmentDirection(R, i)
+            );
+            const vector v(f.velocity() + (f.omega() ^ r));
+            rec[k++] = f.id();
+            for
+            (
+                const vector& w
+              : {
+                    vector(f.position() + r - half),
+                    vector(f.position() + r + half),
+                    v, f.velocity(), f.omega(), p
+                }
+            )
+            {
+                for (direction c = 0; c < 3; ++c)
+                {
+                    rec[k++] = w[c];
+                }
+            }
+            rec[k++] = f.segmentDiameter(i);
+        }
+    }
+    Pstream::gatherList(all);
+    if (!Pstream::master())
+    {
+        return scalarList();
+    }
+    label nAll = 0;
+    for (const scalarList& r : all)
+    {
+        nAll += r.size();
+    }
+    scalarList out(nAll);
+    nAll = 0;
+    for (const scalarList& r : all)
+    {
+        SubList<scalar>(out, r.size(), nAll) = r;
+        nAll += r.size();
+    }
+    return out;
+}
+
+// ************************************************************************* //

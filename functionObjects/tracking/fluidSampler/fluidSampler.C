@@ -1,0 +1,325 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fluidSampler.H"
+#include "processorPolyPatch.H"
+#include "globalMeshData.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- The interpolation of scheme for psi: fluidSampler's cellPoint (the
+//  same numbers, its values in view) for cellPoint, else the run-time
+//  selected one
+template<class Type>
+autoPtr<interpolation<Type>> interpolator
+(
+    const word& scheme,
+    const GeometricField<Type, fvPatchField, volMesh>& psi
+)
+{
+    if (scheme == interpolationCellPoint<Type>::typeName)
+    {
+        return autoPtr<interpolation<Type>>
+        (
+            new fluidSampler::cellPoint<Type>(psi)
+        );
+    }
+    return interpolation<Type>::New(scheme, psi);
+}
+
+
+template<class Type>
+const fluidSampler::cellPoint<Type>* cellPointOf
+(
+    const autoPtr<interpolation<Type>>& ip
+)
+{
+    return ip.valid() ? isA<fluidSampler::cellPoint<Type>>(ip()) : nullptr;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fluidSampler::fluidSampler
+(
+    const fvMesh& mesh,
+    const fiberTracker& tracker,
+    neighbourExchange& neighbours,
+    const word& scheme
+)
+:
+    mesh_(mesh),
+    tracker_(tracker),
+    neighbours_(neighbours),
+    scheme_(scheme),
+    UInterp_(),
+    gradUInterp_(),
+    kInterp_(),
+    epsilonInterp_(),
+    UCellPoint_(nullptr),
+    gradUCellPoint_(nullptr),
+    kCellPoint_(nullptr),
+    epsilonCellPoint_(nullptr),
+    mu_(),
+    nRemote_(0),
+    nOutside_(0)
+{
+    // Processor patch addressing is built collectively
+    (void)mesh_.globalData();
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fluidSampler::interpolate
+(
+    const trackedPoint& tp,
+    fluidSample& s
+) const
+{
+    const tetIndices tet(tp.tet());
+    const barycentric& w = tp.coordinates;
+    s.mu = mu_[tp.celli];
+    s.cell = tp.celli;
+    s.proc = Pstream::myProcNo();
+    s.R = tensor::I;
+
+    if (UCellPoint_)
+    {
+        const triFace tri(tracker_.triangle(tp));
+        s.U = UCellPoint_->value(w, tp.celli, tri);
+        // fvc::grad(U) holds du_j/dx_i; G_ij = du_i/dx_j
+        s.G = gradUCellPoint_->value(w, tp.celli, tri).T();
+        if (kCellPoint_)
+        {
+            s.k = kCellPoint_->value(w, tp.celli, tri);
+            s.epsilon = epsilonCellPoint_->value(w, tp.celli, tri);
+        }
+    }
+    else
+    {
+        s.U = UInterp_->interpolate(w, tet);
+        s.G = gradUInterp_->interpolate(w, tet).T();
+        if (kInterp_.valid())
+        {
+            s.k = kInterp_->interpolate(w, tet);
+            s.epsilon = epsilonInterp_->interpolate(w, tet);
+        }
+    }
+    s.k = max(s.k, scalar(0));
+    s.epsilon = max(s.epsilon, scalar(0));
+    s.inside = true;
+    s.nWall = Zero;
+    s.dWall = 0;
+    s.mirror = false;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fluidSampler::update
+(
+    const volVectorField& U,
+    const volTensorField& gradU,
+    const scalarField& muCells,
+    const volScalarField* kPtr,
+    const volScalarField* epsilonPtr
+)
+{
+    UInterp_ = interpolator(scheme_, U);
+    gradUInterp_ = interpolator(scheme_, gradU);
+    mu_ = muCells;
+    if (kPtr && epsilonPtr)
+    {
+        kInterp_ = interpolator(scheme_, *kPtr);
+        epsilonInterp_ = interpolator(scheme_, *epsilonPtr);
+    }
+    else
+    {
+        kInterp_.clear();
+        epsilonInterp_.clear();
+    }
+
+    UCellPoint_ = cellPointOf(UInterp_);
+    gradUCellPoint_ = cellPointOf(gradUInterp_);
+    kCellPoint_ = cellPointOf(kInterp_);
+    epsilonCellPoint_ = cellPointOf(epsilonInterp_);
+    const bool allCellPoint =
+        UCellPoint_ && gradUCellPoint_
+     && (!kInterp_.valid() || (kCellPoint_ && epsilonCellPoint_));
+    if (!allCellPoint)
+    {
+        UCellPoint_ = nullptr;
+    }
+}
+
+
+bool Foam::fluidSampler::sample
+(
+    const trackedPoint& tp,
+    const fiberTracker::hit& h,
+    fluidSample& s,
+    request& req
+) const
+{
+    typedef fiberTracker::stop stop;
+
+    if (h.where == stop::processor)
+    {
+        tracker_.processorAddress(h.face, req.proc, req.patch, req.face);
+        req.p = tracker_.position(tp);
+        req.d = h.left;
+        return false;
+    }
+
+    interpolate(tp, s);
+
+    if (h.where == stop::wall || h.where == stop::symmetry)
+    {
+        const vector& Sf = mesh_.faceAreas()[h.face];
+        s.inside = false;
+        s.nWall = Sf/mag(Sf);
+        s.dWall = max(h.left & s.nWall, scalar(0));
+        s.mirror = (h.where == stop::symmetry);
+    }
+    else if (h.where == stop::outlet)
+    {
+        s.inside = false;
+        ++nOutside_;
+    }
+
+    toStartFrame(h, s);
+    return true;
+}
+
+
+void Foam::fluidSampler::toStartFrame
+(
+    const fiberTracker::hit& h,
+    fluidSample& s
+)
+{
+    if (h.crossed && h.T.hasR())
+    {
+        const tensor& R = h.T.R();
+        s.U = R.T() & s.U;
+        s.G = R.T() & s.G & R;
+        s.nWall = R.T() & s.nWall;
+        s.R = s.R & R;
+    }
+}
+
+
+void Foam::fluidSampler::answer(Istream& is, fluidSample& s) const
+{
+    label patch, face;
+    point p;
+    vector d;
+    is >> patch >> face >> p >> d;
+    const processorPolyPatch& pp = tracker_.processorPatch(patch);
+    const vectorTensorTransform T(fiberTracker::receiving(pp, face));
+
+    // The point on the face, reached from the cell behind it (it may stop
+    // on the face by round-off), then on along the line
+    trackedPoint tp;
+    tracker_.locate(T.transformPosition(p), tp, pp.faceCells()[face]);
+    fiberTracker::hit h = tracker_.track(tp, T.hasR() ? (T.R() & d) : d);
+    if (h.where == fiberTracker::stop::processor)
+    {
+        // In a third processor's part: the data at the boundary
+        h.where = fiberTracker::stop::outlet;
+    }
+    request dummy;
+    sample(tp, h, s, dummy);
+    fiberTracker::hit back{h.where, -1, Zero, true, T, false};
+    toStartFrame(back, s);
+}
+
+
+void Foam::fluidSampler::exchange
+(
+    const UList<request>& reqs,
+    UList<fluidSample>& answers
+) const
+{
+    const label nProcs = Pstream::nProcs();
+
+    // Requests per neighbour, in the order of reqs
+    List<DynamicList<label>> index(nProcs);
+    forAll(reqs, k)
+    {
+        index[reqs[k].proc].append(k);
+    }
+
+    forAll(index, proci)
+    {
+        if (index[proci].size())
+        {
+            autoPtr<UOPstream> osPtr(neighbours_.sendStream(proci));
+            UOPstream& os = osPtr();
+            os << index[proci].size();
+            for (const label k : index[proci])
+            {
+                os  << reqs[k].patch << token::SPACE << reqs[k].face
+                    << token::SPACE << reqs[k].p << token::SPACE
+                    << reqs[k].d;
+            }
+        }
+    }
+    neighbours_.exchange();
+
+    // Answer: locate the point from the cell behind the patch face, in
+    // this processor's frame (processorCyclic: transformed), and send the
+    // data back in the asker's frame
+    for (const label proci : neighbours_.neighbours())
+    {
+        if (!neighbours_.received(proci))
+        {
+            continue;
+        }
+        autoPtr<UIPstream> isPtr(neighbours_.recvStream(proci));
+        UIPstream& is = isPtr();
+        const label n = readLabel(is);
+        List<fluidSample> result(n);
+        for (label k = 0; k < n; ++k)
+        {
+            answer(is, result[k]);
+        }
+        nRemote_ += n;
+        neighbours_.sendStream(proci)() << result;
+    }
+    neighbours_.exchange();
+
+    forAll(index, proci)
+    {
+        if (index[proci].empty())
+        {
+            continue;
+        }
+        autoPtr<UIPstream> isPtr(neighbours_.recvStream(proci));
+        const List<fluidSample> result(isPtr());
+        forAll(result, k)
+        {
+            answers[index[proci][k]] = result[k];
+        }
+    }
+}
+
+
+// ************************************************************************* //
