@@ -33,6 +33,8 @@ Description
 #include "fiberTracker.H"
 #include "subStepControl.H"
 #include "subStepStatistics.H"
+#include "segmentDistance.H"
+#include "Random.H"
 #include "mathematicalConstants.H"
 #include "IOstreams.H"
 
@@ -1988,6 +1990,147 @@ void testSubStepStatistics()
 }
 
 
+// * * * * * * * * * * * * * * Segment distance * * * * * * * * * * * * * * //
+
+//- The least distance of [p1, q1] and [p2, q2] by sampling: a grid of
+//  (s, t), then grids of shrinking size around the best point
+scalar sampledDistance
+(
+    const point& p1,
+    const point& q1,
+    const point& p2,
+    const point& q2
+)
+{
+    scalar s0 = 0.5, t0 = 0.5, half = 0.5, best = GREAT;
+    for (label level = 0; level < 12; ++level)
+    {
+        const label n = 40;
+        scalar bs = s0, bt = t0;
+        for (label i = 0; i <= n; ++i)
+        {
+            for (label j = 0; j <= n; ++j)
+            {
+                const scalar s = min(max(s0 - half + 2*half*i/n, 0.0), 1.0);
+                const scalar t = min(max(t0 - half + 2*half*j/n, 0.0), 1.0);
+                const scalar d =
+                    mag((p1 + s*(q1 - p1)) - (p2 + t*(q2 - p2)));
+                if (d < best)
+                {
+                    best = d;
+                    bs = s;
+                    bt = t;
+                }
+            }
+        }
+        s0 = bs;
+        t0 = bt;
+        half *= 0.2;
+    }
+    return best;
+}
+
+
+void testSegmentDistance()
+{
+    struct pairCase
+    {
+        const char* name;
+        point p1, q1, p2, q2;
+    };
+    const List<pairCase> cases
+    ({
+        {"crossed", {0, 0, 0}, {1, 0, 0}, {0.5, -0.5, 0.2}, {0.5, 0.5, 0.2}},
+        {"skew", {0, 0, 0}, {1, 0.3, 0}, {0.2, 1, 1}, {0.9, -1, 0.5}},
+        {"parallel", {0, 0, 0}, {1, 0, 0}, {0.4, 0.1, 0}, {1.8, 0.1, 0}},
+        {"parallelDisjoint", {0, 0, 0}, {1, 0, 0}, {1.5, 0.1, 0},
+            {2.5, 0.1, 0}},
+        {"collinear", {0, 0, 0}, {1, 0, 0}, {0.3, 0, 0}, {0.6, 0, 0}},
+        {"endToEnd", {0, 0, 0}, {1, 0, 0}, {1.2, 0, 0}, {2, 0, 0}},
+        {"endToEndReversed", {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {1.2, 0, 0}},
+        {"touchingEnds", {0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 1, 0}},
+        {"tJunction", {0, 0, 0}, {1, 0, 0}, {0.5, 0.2, 0}, {0.5, 1, 0}},
+        {"pointAndSegment", {0.3, 0.4, 0}, {0.3, 0.4, 0}, {0, 0, 0},
+            {1, 0, 0}},
+        {"twoPoints", {0, 0, 0}, {0, 0, 0}, {0, 3, 4}, {0, 3, 4}},
+        {"nearlyParallel", {0, 0, 0}, {1, 0, 0}, {0.2, 0.1, 0},
+            {1.2, 0.1 + 1e-9, 0}}
+    });
+    for (const pairCase& c : cases)
+    {
+        const segmentDistance::result r =
+            segmentDistance::closest(c.p1, c.q1, c.p2, c.q2);
+        const scalar ref = sampledDistance(c.p1, c.q1, c.p2, c.q2);
+        const scalar got = std::sqrt(r.distSqr);
+        // The points on their segments and their distance the one given
+        const bool consistent =
+            r.s >= 0 && r.s <= 1 && r.t >= 0 && r.t <= 1
+         && mag(r.a - (c.p1 + r.s*(c.q1 - c.p1))) < 1e-14
+         && mag(r.b - (c.p2 + r.t*(c.q2 - c.p2))) < 1e-14;
+        // Nearly parallel (below 1e-7 rad) the pair is taken as parallel,
+        // the point in the middle of the overlap: off the least distance
+        // by at most half the length times the angle
+        const vector u1(c.q1 - c.p1), u2(c.q2 - c.p2);
+        const scalar sinA =
+            mag(u1) > 0 && mag(u2) > 0
+          ? mag(u1 ^ u2)/(mag(u1)*mag(u2)) : 1;
+        const scalar tol =
+            1e-12 + 1e-9*ref + (sinA < 1e-7 ? 0.5*mag(u2)*sinA : 0);
+        check
+        (
+            std::string("segmentDistance.") + c.name,
+            consistent && mag(got - ref) < tol,
+            fmt(got, ref, mag(got - ref))
+        );
+    }
+
+    // Parallel overlapping segments: the point is the middle of the overlap
+    {
+        const segmentDistance::result r = segmentDistance::closest
+        (
+            point(0, 0, 0), point(1, 0, 0), point(0.4, 0.1, 0),
+            point(1.8, 0.1, 0)
+        );
+        check
+        (
+            "segmentDistance.parallelMiddleOfOverlap",
+            mag(r.s - 0.7) < 1e-14 && mag(r.a.x() - r.b.x()) < 1e-14,
+            fmt(r.s, 0.7, mag(r.s - 0.7))
+        );
+    }
+
+    // 2000 random pairs (lengths 0 to 1, some nearly parallel)
+    Random rnd(3);
+    scalar worst = 0;
+    for (label k = 0; k < 2000; ++k)
+    {
+        auto rp = [&rnd]()
+        {
+            return point
+            (
+                rnd.sample01<scalar>(), rnd.sample01<scalar>(),
+                rnd.sample01<scalar>()
+            );
+        };
+        const point p1(rp());
+        const point q1(k % 7 == 0 ? p1 : rp());
+        const point p2(rp());
+        const point q2(k % 5 == 0 ? p2 + (q1 - p1)*0.7 : rp());
+        const scalar got =
+            std::sqrt(segmentDistance::closest(p1, q1, p2, q2).distSqr);
+        const scalar ref = sampledDistance(p1, q1, p2, q2);
+        // The exact minimum is never above a sampled distance
+        worst = max(worst, max(got - ref, mag(got - ref) - 1e-9));
+    }
+    check
+    (
+        "segmentDistance.random2000",
+        worst < 1e-12,
+        fmt(worst, 0, worst)
+    );
+}
+
+
 int main()
 {
     FatalError.throwExceptions();
@@ -2012,6 +2155,7 @@ int main()
         testStepControl();
         testSizes();
         testSubStepStatistics();
+        testSegmentDistance();
     }
     catch (const Foam::error& err)
     {

@@ -16,6 +16,7 @@ License
 #include "Switch.H"
 
 #include <algorithm>
+#include <ctime>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -148,7 +149,9 @@ Foam::fiberCloud::fiberCloud
     sampler_(mesh, tracker_, neighbours_, checkedScheme(dict)),
     constraint_(mesh),
     counters_(tracker_.outletPatches(), mesh.boundaryMesh().size()),
-    interactions_(fiberInteraction::New(dict)),
+    interactions_(fiberInteraction::New(dict, mesh)),
+    fixedSet_(),
+    images_(),
     tEnd_(0),
     dt_(0),
     tStopLeft_(0),
@@ -161,11 +164,15 @@ Foam::fiberCloud::fiberCloud
     nInertial_(0),
     nInertialSkipped_(0),
     nSegmentSteps_(0),
+    nIntervals_(0),
+    cpuInteractions_(0),
     nRejected_(0),
     nSentStep_(0),
     nOnwardStep_(0)
 {
     readWallRule(dict);
+    label nPeriodic = 0;
+    images_ = periodicImages::transforms(mesh_, nPeriodic);
     if (constraint_.active())
     {
         g_ = constraint_.constrain(g);
@@ -192,6 +199,7 @@ Foam::fiberCloud::fiberCloud
         restart != nullptr
     );
     counters_.setSets(setNames);
+    fixedSet_ = fiberInjection::fixedSets(injectionDict);
 
     if (restart)
     {
@@ -356,9 +364,12 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     // fiber of every processor is at the same time and the fibers act on
     // each other ('none': one interval, no call)
     const label nInt =
-        interactions_->active() ? interactions_->nIntervals(dt) : 1;
+        interactions_->active()
+      ? interactions_->nIntervals(fibers_, dt)
+      : 1;
     for (label k = 1; k <= nInt; ++k)
     {
+        const scalar tStart = dt*scalar(nInt - k + 1)/nInt;
         tStopLeft_ = k < nInt ? dt*scalar(nInt - k)/nInt : 0;
         if (k > 1)
         {
@@ -370,11 +381,11 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
                 }
             }
         }
-        advance(tStopLeft_);
         if (interactions_->active())
         {
-            interactions_->interact(fibers_, tEnd_ - tStopLeft_);
+            interact(tEnd_ - tStart, tStart - tStopLeft_);
         }
+        advance(tStopLeft_);
     }
 
     endStep(dt);
@@ -405,7 +416,7 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
     }
 
     // Every fiber's state in the step; a release at the step's end up to
-    // round-off takes no sub-step
+    // round-off takes no sub-step, a fixed fiber none
     const label nF = fibers_.size();
     step_.setSize(nF);
     for (label fi = 0; fi < nF; ++fi)
@@ -415,11 +426,15 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
         {
             tLeft = tLeftNew[fi - nOld] > 1e-9*dt ? tLeftNew[fi - nOld] : 0;
         }
+        if (fixedSet_[fibers_[fi].setIndex()])
+        {
+            tLeft = 0;
+        }
         step_[fi] =
             stepState
             {
                 tLeft > 0 ? status::running : status::done,
-                tLeft, 0, 1, -1, -1, -1
+                tLeft, 0, 1, -1, -1, -1, {Zero, Zero}
             };
     }
     counters_.beginStep();
@@ -427,6 +442,30 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
     nOnwardStep_ = 0;
 
     hydro_.resetCounters();
+}
+
+
+void Foam::fiberCloud::interact(const scalar t, const scalar h)
+{
+    typedef fiberInteraction::role role;
+    const label nF = fibers_.size();
+    List<role> roles(nF);
+    List<fiberIntegrator::load> loads(nF, {Zero, Zero});
+    forAll(fibers_, fi)
+    {
+        roles[fi] =
+            step_[fi].st == status::gone ? role::absent
+          : fixedSet_[fibers_[fi].setIndex()] ? role::fixed
+          : role::free;
+    }
+    const std::clock_t c0 = std::clock();
+    interactions_->interact(fibers_, roles, t, h, loads);
+    cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
+    ++nIntervals_;
+    forAll(step_, fi)
+    {
+        step_[fi].load = loads[fi];
+    }
 }
 
 

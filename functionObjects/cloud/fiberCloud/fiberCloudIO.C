@@ -77,6 +77,7 @@ void Foam::fiberCloud::writeRestart(Ostream& os) const
         }
         os << nl;
     }
+    interactions_->writeRestart(os);
     os.check(FUNCTION_NAME);
 }
 
@@ -121,6 +122,7 @@ void Foam::fiberCloud::readRestart(Istream& is)
         }
         fibers_.set(fi, fPtr);
     }
+    interactions_->readRestart(is);
     is.check(FUNCTION_NAME);
     checkLocations();
 

@@ -150,7 +150,13 @@ void Foam::fiberCloud::transfer()
             os  << st.toPatch << token::SPACE << st.toFace
                 << token::SPACE << st.tLeft << token::SPACE << st.nSub
                 << token::SPACE << st.unfollowed
+                << token::SPACE << st.load.F << token::SPACE << st.load.M
                 << token::SPACE << fibers_[fi];
+            if (interactions_->active())
+            {
+                os << token::SPACE;
+                interactions_->writeFiber(fibers_[fi].id(), os);
+            }
             step_[fi].st = status::gone;
             ++nSentStep_;
         }
@@ -179,12 +185,19 @@ void Foam::fiberCloud::receive(const label proci)
         const scalar tLeft = readScalar(is);
         const label nSub = readLabel(is);
         const scalar unfollowed = readScalar(is);
+        fiberIntegrator::load load;
+        is >> load.F >> load.M;
         autoPtr<fiber> fPtr(new fiber(is));
+        if (interactions_->active())
+        {
+            interactions_->readFiber(is);
+        }
 
         const processorPolyPatch& pp = tracker_.processorPatch(patch);
         // processorCyclic: into this side's frame
         const vectorTensorTransform T(fiberTracker::receiving(pp, face));
         fPtr->transform(T);
+        transformLoad(load, T);
 
         const label fi = fibers_.size();
         fibers_.append(fPtr.ptr());
@@ -193,7 +206,7 @@ void Foam::fiberCloud::receive(const label proci)
             stepState
             {
                 tLeft > tStopLeft_ ? status::running : status::done,
-                tLeft, nSub, unfollowed, -1, -1, -1
+                tLeft, nSub, unfollowed, -1, -1, -1, load
             }
         );
 

@@ -65,7 +65,11 @@ void Foam::fiberCloud::locateInjected
         all[fi].segmentCentres(pts);
         forAll(pts, i)
         {
-            if (!segFound[offset[fi] + i] && mesh_.findCell(pts[i]) >= 0)
+            if
+            (
+                !segFound[offset[fi] + i]
+             && periodicImages::inside(mesh_, images_, pts[i])
+            )
             {
                 segFound[offset[fi] + i] = 1;
             }

@@ -314,7 +314,8 @@ void Foam::fiberCloud::finish
     );
     integrator_->advance
     (
-        f, s, hydro_, g, h, coupling_.valid() ? &forces_ : nullptr
+        f, s, hydro_, g, h, coupling_.valid() ? &forces_ : nullptr,
+        interactions_->active() ? &step_[fi].load : nullptr
     );
     constraint_.constrain(f);
     if (!control_.update(f, s, h))
@@ -386,6 +387,7 @@ void Foam::fiberCloud::centreMoved
     {
         fiber& f = fibers_[fi];
         f.transform(c.T);
+        transformLoad(step_[fi].load, c.T);
         if (c.where == fiberTracker::stop::none)
         {
             // The location went across face to matching face; on a mesh
@@ -555,6 +557,22 @@ Foam::vector Foam::fiberCloud::rebound
         f.setVelocity(f.velocity() - (1 + e)*vn*n);
     }
     return shift;
+}
+
+
+void Foam::fiberCloud::transformLoad
+(
+    fiberIntegrator::load& l,
+    const vectorTensorTransform& T
+)
+{
+    // M = sum c x F: with c' = R c + t, F' = R F, M' = R M + t x F'
+    if (T.hasR())
+    {
+        l.F = T.R() & l.F;
+        l.M = T.R() & l.M;
+    }
+    l.M += T.t() ^ l.F;
 }
 
 

@@ -11,6 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberTracking.H"
+#include "contact.H"
+#include "fiberFlocs.H"
 #include "keywordCheck.H"
 #include "IFstream.H"
 #include "OSspecific.H"
@@ -348,6 +350,11 @@ void Foam::functionObjects::fiberTracking::logStep() const
     {
         Log << " (" << cloud_->nRejected() << " sub-steps rejected)";
     }
+    if (cloud_->interactions().active())
+    {
+        Log << ", interactions: " << cloud_->nIntervals()
+            << " intervals, CPU time " << cloud_->cpuInteractions() << " s";
+    }
     if (Pstream::parRun())
     {
         Log << ", remote segment samples " << cloud_->nRemote()
@@ -483,7 +490,14 @@ void Foam::functionObjects::fiberTracking::writeVtk(const word& tag)
     const scalarList records(cloud_->gatherSegments());
     if (vtkWriter_.valid())
     {
-        vtkWriter_->write(records, fiberTime_, tag);
+        vtkWriter_->write
+        (
+            records,
+            fiberTime_,
+            tag,
+            isA<fiberInteractions::contact>(cloud_->interactions())
+          ? &flocOf_ : nullptr
+        );
     }
 }
 
@@ -521,6 +535,7 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
     }
 
     writeExchange();
+    writeContacts();
 
     // Events since the last call
     if (cloud_->loggingEvents())
@@ -590,6 +605,130 @@ void Foam::functionObjects::fiberTracking::writeCounts
             << " + deposited " << s.nDeposited << ", or escaped != "
             << cloud_->nEscapedOutlet() << " summed over the outlets"
             << exit(FatalError);
+    }
+}
+
+
+void Foam::functionObjects::fiberTracking::createContactFiles()
+{
+    if (!isA<fiberInteractions::contact>(cloud_->interactions()))
+    {
+        return;
+    }
+    contactFilePtr_ = createFile("fiberContacts");
+    writeHeader
+    (
+        contactFilePtr_(),
+        "Contacts between fibers and flocs (fiberTracking)"
+    );
+    writeCommented
+    (
+        contactFilePtr_(),
+        "Time nFibers nPairs contactsPerFiber collisions collisionRate"
+        " nFlocs largestFloc meanFlocSize fibersInFlocs"
+    );
+    contactFilePtr_() << endl;
+
+    contactCountFilePtr_ = createFile("fiberContactCounts");
+    writeHeader
+    (
+        contactCountFilePtr_(),
+        "Fibers with k contacts, k = 0 ... 15, then 16 or more"
+        " (fiberTracking)"
+    );
+    string columns("Time");
+    for (label k = 0; k <= 16; ++k)
+    {
+        columns += " n" + Foam::name(k);
+    }
+    writeCommented(contactCountFilePtr_(), columns);
+    contactCountFilePtr_() << endl;
+
+    flocSizeFilePtr_ = createFile("fiberFlocSizes");
+    writeHeader
+    (
+        flocSizeFilePtr_(),
+        "Flocs per size at write times, a block per time (fiberTracking)"
+    );
+    writeCommented(flocSizeFilePtr_(), "Time size count");
+    flocSizeFilePtr_() << endl;
+}
+
+
+void Foam::functionObjects::fiberTracking::writeContacts()
+{
+    fiberInteractions::contact* cm =
+        dynamic_cast<fiberInteractions::contact*>(&cloud_->interactions());
+    if (!cm || cloud_->nIntervals() == 0)
+    {
+        // No contacts searched yet (the start): no row
+        return;
+    }
+
+    // The fibers, the pairs touching, the contacts per fiber (collective)
+    const PtrList<fiber>& fibers = cloud_->fibers();
+    List<labelList> ids(Pstream::nProcs());
+    List<List<FixedList<label, 2>>> pairs(Pstream::nProcs());
+    labelList& myIds = ids[Pstream::myProcNo()];
+    myIds.setSize(fibers.size());
+    labelList count(17, 0);
+    forAll(fibers, fi)
+    {
+        myIds[fi] = fibers[fi].id();
+        ++count[min(cm->contacts(fibers[fi].id()), label(16))];
+    }
+    pairs[Pstream::myProcNo()] = cm->pairs();
+    Pstream::gatherList(ids);
+    Pstream::gatherList(pairs);
+    reduce(count, sumOp<labelList>());
+    const label nCollisions = cm->collisions();
+    const scalar V = gSum(mesh_.V());
+    const scalar dt = fiberTime_ - contactTime_;
+    contactTime_ = fiberTime_;
+    if (!Pstream::master())
+    {
+        return;
+    }
+
+    const labelList allIds(ListListOps::combine<labelList>
+    (
+        ids, accessOp<labelList>()
+    ));
+    const List<FixedList<label, 2>> allPairs
+    (
+        ListListOps::combine<List<FixedList<label, 2>>>
+        (
+            pairs, accessOp<List<FixedList<label, 2>>>()
+        )
+    );
+    const fiberFlocs flocs(allIds, allPairs);
+    flocOf_ = flocs.flocOf();
+    if (!contactFilePtr_.valid())
+    {
+        return;
+    }
+    const label n = allIds.size();
+    contactFilePtr_()
+        << fiberTime_ << tab << n << tab << allPairs.size() << tab
+        << (n ? 2.0*allPairs.size()/n : 0) << tab << nCollisions << tab
+        << (dt > 0 ? nCollisions/(V*dt) : 0) << tab << flocs.nFlocs()
+        << tab << flocs.largest() << tab
+        << (flocs.nFlocs() ? scalar(flocs.nInFlocs())/flocs.nFlocs() : 0)
+        << tab << flocs.nInFlocs() << endl;
+    contactCountFilePtr_() << fiberTime_;
+    for (const label c : count)
+    {
+        contactCountFilePtr_() << tab << c;
+    }
+    contactCountFilePtr_() << endl;
+    if (time_.writeTime() || functionObject::postProcess)
+    {
+        for (const FixedList<label, 2>& s : flocs.sizes())
+        {
+            flocSizeFilePtr_()
+                << fiberTime_ << tab << s[0] << tab << s[1] << nl;
+        }
+        flocSizeFilePtr_() << endl;
     }
 }
 
@@ -712,6 +851,7 @@ Foam::functionObjects::fiberTracking::fiberTracking
     setFilePtr_(),
     vtkWriter_()
 {
+    contactTime_ = fiberTime_;
     read(dict);
 }
 
@@ -1146,6 +1286,8 @@ void Foam::functionObjects::fiberTracking::createCloudFiles
         writeCommented(os, columns);
         os << endl;
     }
+
+    createContactFiles();
 }
 
 
@@ -1246,6 +1388,7 @@ void Foam::functionObjects::fiberTracking::startPostProcessing()
     // the selected times
     started_ = true;
     fiberTime_ = duration_ > 0 ? 0 : time_.value();
+    contactTime_ = fiberTime_;
     writeStatistics();
     if (Pstream::master() && stateFilePtr_.valid())
     {

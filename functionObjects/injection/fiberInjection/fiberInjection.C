@@ -11,6 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberInjection.H"
+#include "periodicImages.H"
+#include "Switch.H"
 #include "keywordCheck.H"
 #include "polyMesh.H"
 #include "Random.H"
@@ -77,6 +79,11 @@ struct setContext
     const fiberSizes& sizes;
     const label seed;
     const vector& freeDirections;
+
+    //- Random orientations in the plane normal to this (zero: in 3-D, or
+    //  the free directions of a 2-D case)
+    const vector planeNormal;
+
     DynamicList<fiber*>& made;
     DynamicList<fiberInjection::origin>& orig;
 
@@ -97,13 +104,20 @@ wordList knownKeys(const dictionary& setDict, const word& setType)
     ({
         "type", "nSegments", "segmentLength", "diameter", "density", "seed"
     });
+    if (setType != "patch")
+    {
+        known.append("fixed");
+    }
     if (setType == "list")
     {
         known.append("fibers");
     }
     else if (setType == "randomBox")
     {
-        known.append(wordList({"nFibers", "box", "direction"}));
+        known.append
+        (
+            wordList({"nFibers", "box", "direction", "planeNormal"})
+        );
     }
     else if (setType == "line")
     {
@@ -111,7 +125,7 @@ wordList knownKeys(const dictionary& setDict, const word& setType)
     }
     else if (setType == "mesh" || setType == "cellZone")
     {
-        known.append(wordList({"nFibers", "direction"}));
+        known.append(wordList({"nFibers", "direction", "planeNormal"}));
         if (setType == "cellZone")
         {
             known.append("cellZone");
@@ -165,6 +179,29 @@ vector directionOf(const dictionary& setDict, bool& fixed)
 }
 
 
+//- A random orientation of a set: uniform on the sphere, in the free
+//  directions of a 2-D case, or in the plane normal to planeNormal
+vector drawDirection(Random& rnd, const setContext& set)
+{
+    if (magSqr(set.planeNormal) == 0)
+    {
+        return randomDirection(rnd, set.freeDirections);
+    }
+    vector p;
+    do
+    {
+        p = vector
+        (
+            rnd.GaussNormal<scalar>(),
+            rnd.GaussNormal<scalar>(),
+            rnd.GaussNormal<scalar>()
+        );
+        p -= (p & set.planeNormal)*set.planeNormal;
+    } while (mag(p) < 1e-6);
+    return p/mag(p);
+}
+
+
 //- A uniform point in the box bb
 point inBox(Random& rnd, const boundBox& bb)
 {
@@ -200,7 +237,7 @@ void listSet(const setContext& set)
             wordList
             ({
                 "centre", "direction", "nSegments", "segmentLength",
-                "diameter", "density"
+                "diameter", "density", "velocity"
             }),
             "fiber " + Foam::name(k) + " of set '" + set.name + "'"
         );
@@ -211,17 +248,15 @@ void listSet(const setContext& set)
         sz.d = orDefault(fd, "diameter", sz.d);
         const scalar rho = orDefault(fd, "density", set.sizes.density());
         fiberSizes::checkSize(fd, sz);
-        set.add
+        fiber* f = makeFiber
         (
-            makeFiber
-            (
-                set.made.size(),
-                fd.get<point>("centre"),
-                keywordCheck::unitVector(fd, "direction"),
-                sz, rho, set.index
-            ),
-            k
+            set.made.size(),
+            fd.get<point>("centre"),
+            keywordCheck::unitVector(fd, "direction"),
+            sz, rho, set.index
         );
+        f->setVelocity(fd.getOrDefault<vector>("velocity", Zero));
+        set.add(f, k);
     }
 }
 
@@ -247,7 +282,7 @@ void boxSet(const setContext& set)
         const point c(inBox(rnd, bb));
         const vector p
         (
-            fixedDir ? dir : randomDirection(rnd, set.freeDirections)
+            fixedDir ? dir : drawDirection(rnd, set)
         );
         set.add
         (
@@ -339,6 +374,7 @@ void regionOf
 void regionCandidates
 (
     const polyMesh& mesh,
+    const UList<vectorTensorTransform>& images,
     const setContext& set,
     const boolList& inside,
     const boundBox& bb,
@@ -377,7 +413,7 @@ void regionCandidates
         }
         const vector p
         (
-            fixedDir ? dir : randomDirection(rnd, set.freeDirections)
+            fixedDir ? dir : drawDirection(rnd, set)
         );
         cand.set
         (
@@ -398,7 +434,8 @@ void regionCandidates
             const point ends[3] = {pts[i], pts[i] - half, pts[i] + half};
             for (label q = 0; q < 3; ++q)
             {
-                ok[j*m + 1 + 3*i + q] = (mesh.findCell(ends[q]) >= 0);
+                ok[j*m + 1 + 3*i + q] =
+                    periodicImages::inside(mesh, images, ends[q]);
             }
         }
     }
@@ -411,7 +448,8 @@ void regionCandidates
 //  centres uniform in volume, drawn in the region's bounding box and kept
 //  where the region holds them, so a cell is hit in proportion to its
 //  volume and uniformly inside it; a candidate with a segment (centre or
-//  end) outside the mesh is drawn again (counted).  Every processor draws
+//  end) outside the mesh is drawn again (counted); a point beyond a
+//  periodic patch is in the mesh where its image is.  Every processor draws
 //  the same candidates (one random stream, seed) and the tests are
 //  combined, so the fibers are the same for any decomposition.  Fiber k
 //  keeps its size (stream k): a candidate that does not fit is placed
@@ -428,6 +466,13 @@ void inRegion
     boolList inside;
     boundBox bb;
     regionOf(mesh, set.dict, setType, inside, bb);
+
+    // A segment end beyond a periodic patch lies in the mesh as its image
+    label nBase = 0;
+    const List<vectorTensorTransform> images
+    (
+        periodicImages::transforms(mesh, nBase)
+    );
 
     Random rnd(set.seed);
     const label batch = 256;
@@ -460,7 +505,7 @@ void inRegion
         label m;
         regionCandidates
         (
-            mesh, set, inside, bb, slots, rnd, cand, sz, ok, m
+            mesh, images, set, inside, bb, slots, rnd, cand, sz, ok, m
         );
         forAll(cand, j)
         {
@@ -541,7 +586,11 @@ void readSet
     const setContext set
     {
         setDict, setName, setIndex, sizes, keywordCheck::seed(setDict),
-        freeDirections, made, orig
+        freeDirections,
+        setDict.found("planeNormal")
+      ? keywordCheck::unitVector(setDict, "planeNormal")
+      : vector::zero,
+        made, orig
     };
     if (setType == "list")
     {
@@ -619,6 +668,25 @@ void Foam::fiberInjection::read
     {
         feeds.set(i, fed[i]);
     }
+}
+
+
+Foam::boolList Foam::fiberInjection::fixedSets(const dictionary& dict)
+{
+    DynamicList<bool> fixed;
+    for (const entry& e : dict)
+    {
+        if (e.isDict())
+        {
+            const dictionary& d = e.dict();
+            fixed.append
+            (
+                d.get<word>("type") != "patch"
+             && d.getOrDefault<Switch>("fixed", false)
+            );
+        }
+    }
+    return boolList(std::move(fixed));
 }
 
 

@@ -16,7 +16,8 @@ License
 
 Foam::autoPtr<Foam::fiberInteraction> Foam::fiberInteraction::New
 (
-    const dictionary& dict
+    const dictionary& dict,
+    const polyMesh& mesh
 )
 {
     const dictionary& iDict = dict.subOrEmptyDict("interactions");
@@ -37,7 +38,7 @@ Foam::autoPtr<Foam::fiberInteraction> Foam::fiberInteraction::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<fiberInteraction>(cstrIter()(iDict));
+    return autoPtr<fiberInteraction>(cstrIter()(iDict, mesh));
 }
 
 

@@ -136,7 +136,8 @@ void Foam::fiberVtkWriter::write
 (
     const scalarList& rec,
     const scalar t,
-    const word& tag
+    const word& tag,
+    const Map<label>* flocOf
 )
 {
     const label n = rec.size()/recordSize;
@@ -161,7 +162,7 @@ void Foam::fiberVtkWriter::write
         append<int64_t>(offs.bytes, 2*i + 2);
         append<int64_t>(ids.bytes, int64_t(rec[i*recordSize]));
     }
-    const List<vtkArray> cellData
+    List<vtkArray> cellData
     ({
         ids,
         doubles("velocity", rec, n, 7, 3),
@@ -170,6 +171,16 @@ void Foam::fiberVtkWriter::write
         doubles("orientation", rec, n, 16, 3),
         doubles("diameter", rec, n, 19, 1)
     });
+    if (flocOf)
+    {
+        vtkArray flocs{"Int64", "flocId", 1, std::string()};
+        for (label i = 0; i < n; ++i)
+        {
+            const label id(rec[i*recordSize]);
+            append<int64_t>(flocs.bytes, int64_t(flocOf->lookup(id, -1)));
+        }
+        cellData.append(flocs);
+    }
 
     const word file(name_ + "_" + tag + ".vtp");
     std::ofstream os((dir_/file).c_str(), std::ios::binary);

@@ -42,6 +42,35 @@ Foam::scalar Foam::fiberIntegrators::BDF2::ratio
 }
 
 
+void Foam::fiberIntegrators::BDF2::historyForces
+(
+    const fiber& f,
+    const scalar h,
+    const scalar a0,
+    const scalar a1,
+    const scalar a2,
+    const vector& V,
+    const vector& Vm,
+    segmentForces& out
+)
+{
+    // m (a0 V + a1 Vn + a2 Vm) = h (F + m g + F_ext), so the fiber's
+    // momentum changes by h (F + m g + F_ext) less m (history), where
+    // history = (a0 - 1) V + (a1 + 1) Vn + a2 Vm (zero for an implicit
+    // Euler step, and for a constant acceleration at any step ratio).  The
+    // fluid gets what the fiber took: the history term joins the segments'
+    // forces by their share of the mass
+    const vector history
+    (
+        (a0 - 1)*V + (a1 + 1)*f.velocity() + a2*Vm
+    );
+    forAll(out.F, i)
+    {
+        out.F[i] -= f.segmentMass(i)*history/h;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fiberIntegrators::BDF2::BDF2(const dictionary&)
@@ -71,7 +100,8 @@ void Foam::fiberIntegrators::BDF2::advance
     const fiberHydrodynamics& hydro,
     const vector& g,
     const scalar h,
-    segmentForces* out
+    segmentForces* out,
+    const load* ext
 ) const
 {
     const scalar rho = ratio(f, h);
@@ -98,8 +128,12 @@ void Foam::fiberIntegrators::BDF2::advance
         -f.mass()*(a1*Vn + a2*Vm)/h,
         -(I & (a1*wn + a2*wm))/h,
         wn + rho*(wn - wm),
-        V, w, out
+        V, w, out, ext
     );
+    if (out && rho > 0)
+    {
+        historyForces(f, h, a0, a1, a2, V, Vm, *out);
+    }
 
     f.moveBy
     (

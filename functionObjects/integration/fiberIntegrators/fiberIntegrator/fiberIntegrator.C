@@ -162,7 +162,8 @@ void Foam::fiberIntegrator::solve
     const vector& wHat,
     vector& V,
     vector& w,
-    segmentForces* out
+    segmentForces* out,
+    const load* ext
 )
 {
     const vector V0(f.velocity());
@@ -178,6 +179,11 @@ void Foam::fiberIntegrator::solve
     addBlock(M, 3, 3, c*I - fiberHydrodynamics::crossMatrix(I & wHat));
     addBlock(rhs, 0, bV + m*g);
     addBlock(rhs, 3, bW);
+    if (ext)
+    {
+        addBlock(rhs, 0, ext->F);
+        addBlock(rhs, 3, ext->M - (f.position() ^ ext->F));
+    }
 
     fiberHydrodynamics::segmentLaw k;
 

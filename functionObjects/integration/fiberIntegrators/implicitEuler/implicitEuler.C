@@ -41,7 +41,8 @@ void Foam::fiberIntegrators::implicitEuler::advance
     const fiberHydrodynamics& hydro,
     const vector& g,
     const scalar dt,
-    segmentForces* out
+    segmentForces* out,
+    const load* ext
 ) const
 {
     // Eq. 14-15: c = 1/dt, history m V_n/dt and I w_n/dt, gyroscopic
@@ -54,7 +55,7 @@ void Foam::fiberIntegrators::implicitEuler::advance
         f.mass()*f.velocity()/dt,
         (f.inertia(R) & f.omega())/dt,
         f.omega(),
-        V, w, out
+        V, w, out, ext
     );
 
     // Eq. 16-17, rigid
