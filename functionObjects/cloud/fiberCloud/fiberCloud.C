@@ -363,15 +363,16 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     // The intervals of the interaction model: at the end of each, every
     // fiber of every processor is at the same time and the fibers act on
     // each other ('none': one interval, no call)
-    const label nInt =
-        interactions_->active()
-      ? interactions_->nIntervals(fibers_, dt)
-      : 1;
-    for (label k = 1; k <= nInt; ++k)
+    const bool active = interactions_->active();
+    scalar tLeft = dt;
+    for (bool first = true; ; first = false)
     {
-        const scalar tStart = dt*scalar(nInt - k + 1)/nInt;
-        tStopLeft_ = k < nInt ? dt*scalar(nInt - k)/nInt : 0;
-        if (k > 1)
+        const scalar h =
+            active
+          ? interactions_->nextInterval(fibers_, roles(), dt, tLeft)
+          : tLeft;
+        tStopLeft_ = h < tLeft ? tLeft - h : 0;
+        if (!first)
         {
             for (stepState& st : step_)
             {
@@ -381,11 +382,20 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
                 }
             }
         }
-        if (interactions_->active())
+        if (active)
         {
-            interact(tEnd_ - tStart, tStart - tStopLeft_);
+            interact(tEnd_ - tLeft, tLeft - tStopLeft_);
         }
         advance(tStopLeft_);
+        if (active)
+        {
+            settle();
+        }
+        if (!(tStopLeft_ > 0))
+        {
+            break;
+        }
+        tLeft = tStopLeft_;
     }
 
     endStep(dt);
@@ -434,7 +444,7 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
             stepState
             {
                 tLeft > 0 ? status::running : status::done,
-                tLeft, 0, 1, -1, -1, -1, {Zero, Zero}
+                tLeft, 0, 1, -1, -1, -1, fiberIntegrator::load()
             };
     }
     counters_.beginStep();
@@ -445,27 +455,45 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
 }
 
 
-void Foam::fiberCloud::interact(const scalar t, const scalar h)
+Foam::List<Foam::fiberInteraction::role> Foam::fiberCloud::roles() const
 {
     typedef fiberInteraction::role role;
-    const label nF = fibers_.size();
-    List<role> roles(nF);
-    List<fiberIntegrator::load> loads(nF, {Zero, Zero});
+    List<role> r(fibers_.size());
     forAll(fibers_, fi)
     {
-        roles[fi] =
+        r[fi] =
             step_[fi].st == status::gone ? role::absent
           : fixedSet_[fibers_[fi].setIndex()] ? role::fixed
           : role::free;
     }
+    return r;
+}
+
+
+void Foam::fiberCloud::interact(const scalar t, const scalar h)
+{
+    List<fiberIntegrator::load> loads(fibers_.size());
     const std::clock_t c0 = std::clock();
-    interactions_->interact(fibers_, roles, t, h, loads);
+    interactions_->interact(fibers_, roles(), t, h, loads);
     cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
     ++nIntervals_;
     forAll(step_, fi)
     {
         step_[fi].load = loads[fi];
     }
+}
+
+
+void Foam::fiberCloud::settle()
+{
+    List<fiberIntegrator::load> loads(step_.size());
+    forAll(step_, fi)
+    {
+        loads[fi] = step_[fi].load;
+    }
+    const std::clock_t c0 = std::clock();
+    interactions_->settle(fibers_, roles(), loads);
+    cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
 }
 
 

@@ -150,7 +150,7 @@ void Foam::fiberCloud::transfer()
             os  << st.toPatch << token::SPACE << st.toFace
                 << token::SPACE << st.tLeft << token::SPACE << st.nSub
                 << token::SPACE << st.unfollowed
-                << token::SPACE << st.load.F << token::SPACE << st.load.M
+                << token::SPACE << st.load
                 << token::SPACE << fibers_[fi];
             if (interactions_->active())
             {
@@ -186,7 +186,7 @@ void Foam::fiberCloud::receive(const label proci)
         const label nSub = readLabel(is);
         const scalar unfollowed = readScalar(is);
         fiberIntegrator::load load;
-        is >> load.F >> load.M;
+        is >> load;
         autoPtr<fiber> fPtr(new fiber(is));
         if (interactions_->active())
         {
@@ -197,7 +197,7 @@ void Foam::fiberCloud::receive(const label proci)
         // processorCyclic: into this side's frame
         const vectorTensorTransform T(fiberTracker::receiving(pp, face));
         fPtr->transform(T);
-        transformLoad(load, T);
+        load.transform(T);
 
         const label fi = fibers_.size();
         fibers_.append(fPtr.ptr());

@@ -318,12 +318,21 @@ void Foam::fiberCloud::finish
         interactions_->active() ? &step_[fi].load : nullptr
     );
     constraint_.constrain(f);
-    if (!control_.update(f, s, h))
+
+    // The response to implicit contacts is no error of the sub-step: the
+    // interaction's intervals resolve it (maxApproach)
+    const bool inContact =
+        interactions_->active() && step_[fi].load.implicit;
+    if (!control_.update(f, s, h, inContact))
     {
         // Rejected: undone, to be taken again with a shorter step
         f.restoreMotion(m0);
         ++nRejected_;
         return;
+    }
+    if (interactions_->active())
+    {
+        step_[fi].load.record(f, h);
     }
     if (coupling_.valid())
     {
@@ -387,7 +396,7 @@ void Foam::fiberCloud::centreMoved
     {
         fiber& f = fibers_[fi];
         f.transform(c.T);
-        transformLoad(step_[fi].load, c.T);
+        step_[fi].load.transform(c.T);
         if (c.where == fiberTracker::stop::none)
         {
             // The location went across face to matching face; on a mesh
@@ -557,22 +566,6 @@ Foam::vector Foam::fiberCloud::rebound
         f.setVelocity(f.velocity() - (1 + e)*vn*n);
     }
     return shift;
-}
-
-
-void Foam::fiberCloud::transformLoad
-(
-    fiberIntegrator::load& l,
-    const vectorTensorTransform& T
-)
-{
-    // M = sum c x F: with c' = R c + t, F' = R F, M' = R M + t x F'
-    if (T.hasR())
-    {
-        l.F = T.R() & l.F;
-        l.M = T.R() & l.M;
-    }
-    l.M += T.t() ^ l.F;
 }
 
 

@@ -267,11 +267,18 @@ bool Foam::subStepControl::update
 (
     fiber& f,
     const UList<fluidSample>& s,
-    const scalar h
+    const scalar h,
+    const bool inContact
 ) const
 {
     if (mode_ != mode::tolerance)
     {
+        return true;
+    }
+    if (inContact)
+    {
+        f.jumped() = false;
+        f.hNext() = h*maxGrowth;
         return true;
     }
     if (f.jumped())

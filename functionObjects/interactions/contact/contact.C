@@ -16,6 +16,7 @@ License
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 #include "HashSet.H"
+#include "Switch.H"
 
 #include <algorithm>
 
@@ -38,14 +39,19 @@ namespace
 
 using namespace Foam;
 
-//- A pair's force and moment on this side's fiber, with the pair's key
-//  (this side's fiber and segment, the other's) for a fixed order
+//- A pair's load on this side's fiber (explicit force, lever of the
+//  contact point, implicit spring, dashpot and predicted velocity), with
+//  the pair's key (this side's fiber and segment, the other's) for a fixed
+//  order
 struct contribution
 {
     fiberInteractions::contact::pairKey key;
     label local;
     vector F;
-    vector M;
+    vector r;
+    tensor K;
+    tensor C;
+    vector vp;
 };
 
 
@@ -90,8 +96,13 @@ Foam::fiberInteractions::contact::contact
     contactSteps_(20),
     cohesion_(0),
     range_(0),
+    implicit_(false),
+    maxApproach_(0.25),
+    hLast_(0),
     periodic_(),
     springs_(),
+    records_(),
+    pending_(),
     pairs_(),
     touching_(),
     nCollisions_(0)
@@ -111,7 +122,8 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
         wordList
         ({
             "type", "stiffness", "restitution", "friction",
-            "tangentialStiffness", "contactSteps", "cohesion"
+            "tangentialStiffness", "contactSteps", "cohesion", "implicit",
+            "maxApproach"
         }),
         "interactions (contact)"
     );
@@ -140,6 +152,8 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
             << "Entry 'contactSteps' must be at least 1, not "
             << contactSteps_ << exit(FatalIOError);
     }
+    implicit_ = dict.getOrDefault<Switch>("implicit", false);
+    maxApproach_ = keywordCheck::positive(dict, "maxApproach", 0.25);
     if (dict.found("cohesion"))
     {
         const dictionary& c = dict.subDict("cohesion");
@@ -155,13 +169,52 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
 
     Info<< "    Fiber contacts: k_n " << kn_ << " N/m, restitution " << e_
         << " (damping ratio " << zeta_ << "), friction " << mu_
-        << ", k_t/k_n " << ktRatio_ << ", " << contactSteps_
-        << " intervals per contact time";
+        << ", k_t/k_n " << ktRatio_;
+    if (implicit_)
+    {
+        Info<< ", implicit: intervals by the approach of pairs, at most "
+            << maxApproach_ << " diameters each";
+    }
+    else
+    {
+        Info<< ", " << contactSteps_ << " intervals per contact time";
+    }
     if (cohesion_ > 0)
     {
         Info<< ", cohesion " << cohesion_ << " N within " << range_ << " m";
     }
     Info<< endl;
+}
+
+
+Foam::vector Foam::fiberInteractions::contact::previousSpring
+(
+    const pairKey& k,
+    pairKey& from
+) const
+{
+    // The contact's own, or one that moved to it from a neighbouring
+    // segment of either fiber (across a joint)
+    from = k;
+    const auto it = springs_.cfind(k);
+    if (it.found() || springs_.empty())
+    {
+        return it.found() ? *it : vector(Zero);
+    }
+    for (label a = -1; a <= 1; ++a)
+    {
+        for (label b = -1; b <= 1; ++b)
+        {
+            const pairKey n{k[0], k[1] + a, k[2], k[3] + b};
+            const auto jt = springs_.cfind(n);
+            if (jt.found())
+            {
+                from = n;
+                return *jt;
+            }
+        }
+    }
+    return Zero;
 }
 
 
@@ -173,13 +226,17 @@ Foam::vector Foam::fiberInteractions::contact::tangential
     const scalar m,
     const pairKey& k,
     const scalar h,
-    springTable& springs
+    springTable& springs,
+    bool& sticks,
+    vector& xiStart,
+    scalar& cSlide
 ) const
 {
     // The spring of the contact, turned into the present contact plane
     // (its length kept), and stretched by the tangential motion over the
     // interval
-    vector xi(springs_.lookup(k, Zero));
+    pairKey from(k);
+    vector xi(previousSpring(k, from));
     const scalar len = mag(xi);
     xi -= (xi & n)*n;
     const scalar lenT = mag(xi);
@@ -187,21 +244,86 @@ Foam::vector Foam::fiberInteractions::contact::tangential
     {
         xi *= len/lenT;
     }
-    xi += vt*h;
-
+    xiStart = xi;
     const scalar kt = ktRatio_*kn_;
     const scalar ct = 2*zeta_*std::sqrt(m*kt);
-    vector Ft(-kt*xi - ct*vt);
     const scalar FtMax = mu_*mag(Fn);
-    if (mag(Ft) > FtMax)
+
+    if (implicit_)
+    {
+        // Sticking: the spring's force at the start, its stretch and the
+        // dashpot implicit.  Sliding (where settle() found the spring
+        // beyond Coulomb's bound, or a new contact that slides by more
+        // than the spring can hold in the interval): the spring held at
+        // the bound along the sliding and Coulomb's force; where the
+        // sliding slowed down in the last interval and friction alone
+        // could stop it within this one, Coulomb's force as an implicit
+        // dashpot, F = -mu F_n v_t/max(|v_t|, mu F_n h/m) at the present
+        // speed (no overshoot as the sliding stops)
+        const label mode = sliding_.lookup(from, 0);
+        const bool slid =
+            mode > 0 || (!springs_.found(from) && kt*mag(vt)*h > FtMax);
+        sticks = !slid;
+        cSlide = 0;
+        if (sticks)
+        {
+            springs.set(k, xi);
+            return -kt*xi;
+        }
+        const vector dir(mode > 0 && mag(xi) > 0 ? xi : vt);
+        const scalar ld = mag(dir);
+        xi = ld > 0 ? vector((FtMax/kt/ld)*dir) : vector(Zero);
+        xiStart = xi;
+        springs.set(k, xi);
+        if (mode == 2 && mag(vt) < 4*FtMax*h/m)
+        {
+            // Slowing down, slowly enough for friction alone to stop it
+            // within the interval: the dashpot, so that it does not
+            // overshoot
+            cSlide = FtMax/max(mag(vt), max(FtMax*h/m, VSMALL));
+            return Zero;
+        }
+        return -kt*xi;
+    }
+
+    const vector xiEnd(xi + vt*h);
+    vector Ft(-kt*xiEnd - ct*vt);
+    sticks = mag(Ft) <= FtMax;
+    if (!sticks)
     {
         // Sliding: Coulomb's force along the spring, which is reset to
         // hold it
         Ft *= FtMax/mag(Ft);
-        xi = -Ft/kt;
+        springs.set(k, -Ft/kt);
+        return Ft;
     }
-    springs.set(k, xi);
+    springs.set(k, xiEnd);
     return Ft;
+}
+
+
+bool Foam::fiberInteractions::contact::ownsContact
+(
+    const segment& A,
+    const scalar s,
+    const vector& d
+)
+{
+    // The segments of a fiber lie on one straight axis: a closest point at
+    // a joint belongs to the segment on the side where the axis comes
+    // closer (d from the other's closest point), the one after the joint
+    // if neither does; one at a free end or inside, to this one
+    const scalar tol = 1e-9*mag(d);
+    const scalar du = d & (A.b - A.a)/max(mag(A.b - A.a), VSMALL);
+    if (s >= 1 && A.seg < A.nSeg - 1)
+    {
+        return du > tol;
+    }
+    if (s <= 0 && A.seg > 0)
+    {
+        return du <= tol;
+    }
+    return true;
 }
 
 
@@ -212,17 +334,26 @@ bool Foam::fiberInteractions::contact::pairForce
     const pairKey& k,
     const scalar h,
     springTable& springs,
-    vector& F,
-    point& c,
-    bool& touching
+    pairLoad& p
 ) const
 {
     const segmentDistance::result r =
         segmentDistance::closest(A.a, A.b, B.a, B.b);
     const scalar dist = std::sqrt(r.distSqr);
     const scalar delta = 0.5*(A.d + B.d) - dist;
-    touching = delta > 0 || (cohesion_ > 0 && -delta < range_);
-    if (!touching)
+    const bool owns =
+        ownsContact(A, r.s, r.a - r.b) && ownsContact(B, r.t, r.b - r.a);
+    p.touching = (delta > 0 || (cohesion_ > 0 && -delta < range_)) && owns;
+    p.close = owns && -delta < range_ + 0.1*min(A.d, B.d);
+    p.F = Zero;
+    p.K = Zero;
+    p.C = Zero;
+    p.vp = Zero;
+    p.sticks = false;
+    p.xi = Zero;
+    p.xiMax = 0;
+    p.vt0 = 0;
+    if (!p.touching)
     {
         return false;
     }
@@ -238,45 +369,82 @@ bool Foam::fiberInteractions::contact::pairForce
         const vector cr((A.b - A.a) ^ (B.b - B.a));
         n = mag(cr) > 0 ? normalised(cr) : normalTo(A.b - A.a);
     }
-    c = 0.5*((r.a - 0.5*A.d*n) + (r.b + 0.5*B.d*n));
+    p.n = n;
+    p.c = 0.5*((r.a - 0.5*A.d*n) + (r.b + 0.5*B.d*n));
 
-    const vector vrel
-    (
-        (A.v + (A.w ^ (c - A.x))) - (B.v + (B.w ^ (c - B.x)))
-    );
+    const vector vA(A.v + (A.w ^ (p.c - A.x)));
+    const vector vB(B.v + (B.w ^ (p.c - B.x)));
+    const vector vrel(vA - vB);
     const scalar vn = vrel & n;
     const scalar m = reducedMass(A.m, B.m);
 
     scalar Fn = 0;
-    F = Zero;
     if (delta > 0)
     {
-        Fn = kn_*delta - 2*zeta_*std::sqrt(m*kn_)*vn;
+        const scalar cn = 2*zeta_*std::sqrt(m*kn_);
+        Fn = kn_*delta - cn*vn;
+        bool sticks = false;
+        scalar cSlide = 0;
         if (mu_ > 0)
         {
-            F = tangential(n, vrel - vn*n, Fn, m, k, h, springs);
+            p.F =
+                tangential
+                (
+                    n, vrel - vn*n, implicit_ ? kn_*delta : Fn, m, k, h,
+                    springs, sticks, p.xi, cSlide
+                );
+            p.sticks = sticks;
+            p.vt0 = mag(vrel - vn*n);
+            p.xiMax = mu_*(implicit_ ? kn_*delta : mag(Fn))/(ktRatio_*kn_);
+        }
+        if (implicit_)
+        {
+            // Each side moves against the partner's predicted velocity as
+            // if the partner moved oppositely (a free pair: twice the
+            // spring on one side's motion) or not at all (a fixed one)
+            const bool free = A.m > 0 && B.m > 0;
+            const scalar phi = free ? 2 : 1;
+            p.vp = free ? 0.5*(vA + vB) : (A.m > 0 ? vB : vA);
+            const tensor nn(sqr(n));
+            p.K = (phi*kn_)*nn;
+            p.C = (phi*cn)*nn;
+            if (sticks)
+            {
+                const scalar kt = ktRatio_*kn_;
+                p.K += (phi*kt)*(tensor::I - nn);
+                p.C += (phi*2*zeta_*std::sqrt(m*kt))*(tensor::I - nn);
+            }
+            else
+            {
+                p.C += (phi*cSlide)*(tensor::I - nn);
+            }
+            Fn = kn_*delta;
         }
     }
     if (cohesion_ > 0)
     {
         Fn -= delta > 0 ? cohesion_ : cohesion_*(1 + delta/range_);
     }
-    F += Fn*n;
+    p.F += Fn*n;
     return true;
 }
 
 
 void Foam::fiberInteractions::contact::count
 (
-    const DynamicList<FixedList<label, 2>>& touching
+    const DynamicList<FixedList<label, 2>>& touching,
+    const DynamicList<FixedList<label, 2>>& close
 )
 {
-    // Distinct fiber pairs, the other fibers each touches
+    // Distinct fiber pairs, the other fibers each touches; a collision is
+    // a pair that touches and was not close at the last interval (a pair
+    // that rests at a touch, on and off, is one)
     HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> seen;
     HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> before;
-    for (const FixedList<label, 2>& p : pairs_)
+    before.transfer(close_);
+    for (const FixedList<label, 2>& c : close)
     {
-        before.insert(p);
+        close_.insert(c);
     }
     touching_.clear();
     pairs_.clear();
@@ -314,24 +482,93 @@ Foam::scalar Foam::fiberInteractions::contact::contactTime
 }
 
 
-Foam::label Foam::fiberInteractions::contact::nIntervals
+Foam::scalar Foam::fiberInteractions::contact::nextInterval
 (
     const PtrList<fiber>& fibers,
-    const scalar dt
-) const
+    const UList<role>& roles,
+    const scalar dt,
+    const scalar tLeft
+)
 {
+    if (!(tLeft > 0))
+    {
+        return tLeft;
+    }
+
+    // The lightest segment's contact time
     scalar mMin = GREAT;
     for (const fiber& f : fibers)
     {
         mMin = min(mMin, f.mass());
     }
     reduce(mMin, minOp<scalar>());
-    if (!(mMin < GREAT) || !(dt > 0))
+    const scalar tc = mMin < GREAT ? contactTime(mMin/8) : GREAT;
+
+    // The longest interval allowed; the rest of the step is split into
+    // equal parts no longer than that
+    scalar hMax = GREAT;
+    if (implicit_)
     {
-        return 1;
+        // Pairs within reach and a skin of half the reach: how fast they
+        // close (adaptive: every interval), growing at most twofold from
+        // one interval to the next, from the contact time at the start
+        // (kept for the interval's interact, at the same time)
+        DynamicList<segment>& segs = near_.segs;
+        DynamicList<FixedList<label, 2>>& cand = near_.cand;
+        segs.clear();
+        cand.clear();
+        localSegments(fibers, roles, segs);
+        near_.skin = 0.5*reach(segs);
+        segs.clear();
+        near_.r = gather(fibers, roles, segs, nullptr, near_.skin);
+        candidates(segs, near_.r, cand, near_.skin);
+        near_.valid = true;
+        hMax =
+            min
+            (
+                approachLimit(segs, cand, near_.r, near_.skin),
+                hLast_ > 0 ? 2*hLast_ : tc
+            );
     }
-    const scalar tc = contactTime(mMin/8);
-    return max(1, label(std::ceil(dt*contactSteps_/tc*(1 - 1e-9))));
+    else if (tc < GREAT)
+    {
+        // The contact time resolved by contactSteps: equal intervals over
+        // the step
+        hMax = dt/max(1, label(std::ceil(dt*contactSteps_/tc*(1 - 1e-9))));
+    }
+    if (!(hMax < tLeft*(1 - 1e-9)))
+    {
+        return tLeft;
+    }
+    return tLeft/std::ceil(tLeft/hMax*(1 - 1e-9));
+}
+
+
+void Foam::fiberInteractions::contact::payBack
+(
+    const PtrList<fiber>& fibers,
+    const scalar h,
+    UList<fiberIntegrator::load>& loads
+)
+{
+    if (pending_.empty() || !(h > 0))
+    {
+        return;
+    }
+    forAll(fibers, fi)
+    {
+        const auto it = pending_.cfind(fibers[fi].id());
+        if (it.found())
+        {
+            // The impulse and its moment about the centre, over h
+            // (implicit: the sub-steps do not count it as their error)
+            const vector F((*it)[0]/h);
+            loads[fi].implicit = true;
+            loads[fi].F += F;
+            loads[fi].M += (fibers[fi].position() ^ F) + (*it)[1]/h;
+        }
+    }
+    pending_.clear();
 }
 
 
@@ -344,18 +581,42 @@ void Foam::fiberInteractions::contact::interact
     UList<fiberIntegrator::load>& loads
 )
 {
+    hLast_ = h;
     DynamicList<segment> segs;
-    localSegments(fibers, roles, segs);
-    const scalar r = reach(segs);
-    addImages(segs, r);
-    addGhosts(segs, r);
     DynamicList<FixedList<label, 2>> cand;
-    candidates(segs, r, cand);
+    if (near_.valid)
+    {
+        // The search of nextInterval at this time: its pairs within reach
+        segs.transfer(near_.segs);
+        for (const FixedList<label, 2>& ij : near_.cand)
+        {
+            const segment& Q = segs[ij[0]];
+            const segment& P = segs[ij[1]];
+            const scalar within =
+                0.5*(mag(Q.b - Q.a) + mag(P.b - P.a) + Q.d + P.d) + range_;
+            if
+            (
+                magSqr(0.5*(Q.a + Q.b - P.a - P.b)) <= sqr(within)
+            )
+            {
+                cand.append(ij);
+            }
+        }
+        near_.cand.clear();
+        near_.valid = false;
+    }
+    else
+    {
+        const scalar r = gather(fibers, roles, segs);
+        candidates(segs, r, cand);
+    }
 
     springTable next(2*springs_.size() + 16);
     DynamicList<FixedList<label, 2>> touching;
+    DynamicList<FixedList<label, 2>> close;
+    records_.clear();
 
-    // The forces on this processor's fibers, summed in an order that does
+    // The loads on this processor's fibers, summed in an order that does
     // not depend on the decomposition: by fiber, then partner and segments
     DynamicList<contribution> parts;
     for (const FixedList<label, 2>& ij : cand)
@@ -366,21 +627,38 @@ void Foam::fiberInteractions::contact::interact
         // The pair from this side, always in one order: the lower fiber
         // id first
         const bool qFirst = Q.fiber < P.fiber;
-        const segment& A = qFirst ? Q : P;
-        const segment& B = qFirst ? P : Q;
         const pairKey k{Q.fiber, Q.seg, P.fiber, P.seg};
-        vector F;
-        point c;
-        bool touch;
-        if (!pairForce(A, B, k, h, next, F, c, touch))
+        pairLoad pl;
+        const bool acts =
+            pairForce(qFirst ? Q : P, qFirst ? P : Q, k, h, next, pl);
+        if (pl.close)
+        {
+            close.append(FixedList<label, 2>{Q.fiber, P.fiber});
+        }
+        if (!acts)
         {
             continue;
         }
         touching.append(FixedList<label, 2>{Q.fiber, P.fiber});
         if (Q.m > 0)
         {
-            const vector FQ(qFirst ? F : -F);
-            parts.append(contribution{k, Q.local, FQ, c ^ FQ});
+            const vector FQ(qFirst ? pl.F : -pl.F);
+            parts.append
+            (
+                contribution{k, Q.local, FQ, pl.c - Q.x, pl.K, pl.C, pl.vp}
+            );
+            if (implicit_ && magSqr(pl.K) > 0)
+            {
+                records_.set
+                (
+                    k,
+                    pairRecord
+                    {
+                        FQ, pl.K, pl.C, pl.vp, pl.c - Q.x, pl.c - P.x,
+                        pl.n, pl.sticks, pl.xi, pl.xiMax, pl.vt0
+                    }
+                );
+            }
         }
     }
     std::sort
@@ -394,11 +672,154 @@ void Foam::fiberInteractions::contact::interact
     );
     for (const contribution& cp : parts)
     {
-        loads[cp.local].F += cp.F;
-        loads[cp.local].M += cp.M;
+        // The explicit force with the dashpot's part C vp, at the contact
+        // point
+        fiberIntegrator::load& l = loads[cp.local];
+        const vector F(cp.F + (cp.C & cp.vp));
+        l.F += F;
+        l.M += (fibers[cp.local].position() + cp.r) ^ F;
+        if (magSqr(cp.K) > 0)
+        {
+            l.addImplicit(cp.K, cp.C, cp.r, cp.vp);
+        }
     }
+    payBack(fibers, h, loads);
     springs_.transfer(next);
-    count(touching);
+    if (sliding_.size())
+    {
+        // Contacts that ended
+        for (const pairKey& k : sliding_.toc())
+        {
+            if (!springs_.found(k))
+            {
+                sliding_.erase(k);
+            }
+        }
+    }
+    count(touching, close);
+}
+
+
+Foam::vector Foam::fiberInteractions::contact::impulse
+(
+    const pairRecord& p,
+    const vector& F,
+    const vector& r,
+    const segment& s
+)
+{
+    // Over the sub-steps h (ends): F + C vp - K (dX + dTheta x r - vp tau)
+    // - C (V + w x r)
+    return
+        (F + (p.C & p.vp))*s.H
+      - (p.K & (s.sX + (s.sTheta ^ r) - p.vp*s.sTau))
+      - (p.C & (s.sV + (s.sW ^ r)));
+}
+
+
+void Foam::fiberInteractions::contact::settle
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    const UList<fiberIntegrator::load>& loads
+)
+{
+    if (!implicit_)
+    {
+        return;
+    }
+
+    // Each implicit contact's two sides took impulses J_A and J_B of
+    // which the sum is not zero where the partners did not move as each
+    // side predicted: each gets -(J_A + J_B)/2 back at the contact point
+    // at the next interval, so the pair's impulses are equal and opposite
+    DynamicList<segment> segs;
+    gather(fibers, roles, segs, &loads);
+    HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
+        where(2*segs.size());
+    forAll(segs, i)
+    {
+        where.insert(FixedList<label, 2>{segs[i].fiber, segs[i].seg}, i);
+    }
+    for (const pairKey& k : records_.sortedToc())
+    {
+        const auto q = where.cfind(FixedList<label, 2>{k[0], k[1]});
+        const auto o = where.cfind(FixedList<label, 2>{k[2], k[3]});
+        if (!q.found() || !o.found() || segs[*q].local < 0)
+        {
+            continue;
+        }
+        const pairRecord& p = records_[k];
+        const segment& Q = segs[*q];
+        const segment& O = segs[*o];
+
+        // Friction: a sticking contact's spring is stretched by the
+        // relative tangential displacement of the contact point (lower
+        // fiber id first); beyond Coulomb's bound it slides from the next
+        // interval on, held at the bound.  A sliding contact goes on
+        // sliding while its tangential velocity keeps the direction
+        if (mu_ > 0)
+        {
+            const scalar sgn = k[0] < k[2] ? 1 : -1;
+            if (p.sticks)
+            {
+                const vector u
+                (
+                    sgn
+                   *(
+                        (Q.dX + (Q.dTheta ^ p.rThis))
+                      - (O.dX + (O.dTheta ^ p.rOther))
+                    )
+                );
+                vector xi(p.xi + u - (u & p.n)*p.n);
+                if (mag(xi) > p.xiMax)
+                {
+                    xi *= p.xiMax/mag(xi);
+                    sliding_.set(k, 1);
+                }
+                springs_.set(k, xi);
+            }
+            else
+            {
+                const vector v
+                (
+                    sgn
+                   *(
+                        (Q.v + (Q.w ^ p.rThis))
+                      - (O.v + (O.w ^ p.rOther))
+                    )
+                );
+                const vector vt(v - (v & p.n)*p.n);
+                if ((vt & p.xi) > 0)
+                {
+                    springs_.set(k, (p.xiMax/mag(vt))*vt);
+                    sliding_.set(k, mag(vt) < p.vt0 ? 2 : 1);
+                }
+                else
+                {
+                    sliding_.erase(k);
+                }
+            }
+        }
+
+        // A fixed partner, or one that did not move in the interval: no
+        // pair to balance
+        if (!(O.m > 0) || !(O.H > 0) || !(Q.H > 0))
+        {
+            continue;
+        }
+        const vector JQ(impulse(p, p.F, p.rThis, Q));
+        const vector JO(impulse(p, -p.F, p.rOther, O));
+        const vector J(-0.5*(k[0] < k[2] ? JQ + JO : JO + JQ));
+        if (!pending_.found(k[0]))
+        {
+            pending_.insert(k[0], FixedList<vector, 2>(vector::zero));
+        }
+        FixedList<vector, 2>& back = pending_[k[0]];
+        back[0] += J;
+        back[1] += p.rThis ^ J;
+    }
+    records_.clear();
 }
 
 
@@ -408,21 +829,54 @@ void Foam::fiberInteractions::contact::writeFiber
     Ostream& os
 ) const
 {
+    // The fiber's tangential springs and (implicit) its contacts of the
+    // interval; nothing is pending within an interval
     label n = 0;
     forAllConstIters(springs_, iter)
     {
-        if (iter.key()[0] == id)
-        {
-            ++n;
-        }
+        n += (iter.key()[0] == id);
     }
     os << n;
     forAllConstIters(springs_, iter)
     {
         if (iter.key()[0] == id)
         {
-            os << token::SPACE << iter.key() << token::SPACE << iter.val();
+            os  << token::SPACE << iter.key() << token::SPACE << iter.val()
+                << token::SPACE << sliding_.lookup(iter.key(), 0);
         }
+    }
+    n = 0;
+    forAllConstIters(records_, iter)
+    {
+        n += (iter.key()[0] == id);
+    }
+    os << token::SPACE << n;
+    forAllConstIters(records_, iter)
+    {
+        if (iter.key()[0] == id)
+        {
+            const pairRecord& p = iter.val();
+            os  << token::SPACE << iter.key() << token::SPACE << p.F
+                << token::SPACE << p.K << token::SPACE << p.C
+                << token::SPACE << p.vp << token::SPACE << p.rThis
+                << token::SPACE << p.rOther << token::SPACE << p.n
+                << token::SPACE << p.sticks << token::SPACE << p.xi
+                << token::SPACE << p.xiMax << token::SPACE << p.vt0;
+        }
+    }
+}
+
+
+void Foam::fiberInteractions::contact::readSpring(Istream& is)
+{
+    pairKey k;
+    vector xi;
+    label mode;
+    is >> k >> xi >> mode;
+    springs_.set(k, xi);
+    if (mode > 0)
+    {
+        sliding_.set(k, mode);
     }
 }
 
@@ -432,21 +886,37 @@ void Foam::fiberInteractions::contact::readFiber(Istream& is)
     const label n = readLabel(is);
     for (label i = 0; i < n; ++i)
     {
+        readSpring(is);
+    }
+    const label nRec = readLabel(is);
+    for (label i = 0; i < nRec; ++i)
+    {
         pairKey k;
-        vector xi;
-        is >> k >> xi;
-        springs_.set(k, xi);
+        pairRecord p;
+        is  >> k >> p.F >> p.K >> p.C >> p.vp >> p.rThis >> p.rOther >> p.n
+            >> p.sticks >> p.xi >> p.xiMax
+            >> p.vt0;
+        records_.set(k, p);
     }
 }
 
 
 void Foam::fiberInteractions::contact::writeRestart(Ostream& os) const
 {
+    // Between steps: the springs, and the impulses to pay back (implicit)
     os << nl << "contactSprings " << springs_.size();
     forAllConstIters(springs_, iter)
     {
-        os << nl << iter.key() << token::SPACE << iter.val();
+        os  << nl << iter.key() << token::SPACE << iter.val()
+            << token::SPACE << sliding_.lookup(iter.key(), 0);
     }
+    os << nl << "contactPending " << pending_.size();
+    forAllConstIters(pending_, iter)
+    {
+        os  << nl << iter.key() << token::SPACE << iter.val()[0]
+            << token::SPACE << iter.val()[1];
+    }
+    os << nl << "contactInterval " << hLast_;
 }
 
 
@@ -462,7 +932,37 @@ void Foam::fiberInteractions::contact::readRestart(Istream& is)
         }
         return;
     }
-    readFiber(is);
+    const label n = readLabel(is);
+    for (label i = 0; i < n; ++i)
+    {
+        readSpring(is);
+    }
+    token p(is);
+    if (!p.isWord() || p.wordToken() != "contactPending")
+    {
+        if (p.good())
+        {
+            is.putBack(p);
+        }
+        return;
+    }
+    const label nP = readLabel(is);
+    for (label i = 0; i < nP; ++i)
+    {
+        const label id = readLabel(is);
+        FixedList<vector, 2> J;
+        is >> J[0] >> J[1];
+        pending_.set(id, J);
+    }
+    token h(is);
+    if (h.isWord() && h.wordToken() == "contactInterval")
+    {
+        hLast_ = readScalar(is);
+    }
+    else if (h.good())
+    {
+        is.putBack(h);
+    }
 }
 
 

@@ -18,6 +18,7 @@ Description
 #include "fiberTracker.H"
 #include "periodicImages.H"
 #include "PstreamBuffers.H"
+#include "segmentDistance.H"
 
 #include <unordered_map>
 #include <vector>
@@ -33,15 +34,22 @@ typedef fiberInteractions::contact::segment segment;
 
 void writeSegment(Ostream& os, const segment& s)
 {
-    os  << s.fiber << token::SPACE << s.seg << token::SPACE << s.a
+    os  << s.fiber << token::SPACE << s.seg << token::SPACE << s.nSeg
+        << token::SPACE << s.a
         << token::SPACE << s.b << token::SPACE << s.d << token::SPACE << s.x
-        << token::SPACE << s.v << token::SPACE << s.w << token::SPACE << s.m;
+        << token::SPACE << s.v << token::SPACE << s.w << token::SPACE << s.m
+        << token::SPACE << s.sX << token::SPACE << s.sTheta
+        << token::SPACE << s.sV << token::SPACE << s.sW
+        << token::SPACE << s.sTau << token::SPACE << s.H
+        << token::SPACE << s.dX << token::SPACE << s.dTheta;
 }
 
 
 void readSegment(Istream& is, segment& s)
 {
-    is >> s.fiber >> s.seg >> s.a >> s.b >> s.d >> s.x >> s.v >> s.w >> s.m;
+    is  >> s.fiber >> s.seg >> s.nSeg >> s.a >> s.b >> s.d >> s.x >> s.v >> s.w >> s.m
+        >> s.sX >> s.sTheta >> s.sV >> s.sW >> s.sTau >> s.H >> s.dX
+        >> s.dTheta;
     s.local = -1;
 }
 
@@ -55,8 +63,15 @@ segment image(const segment& s, const vectorTensorTransform& T)
     i.x = T.transformPosition(s.x);
     if (T.hasR())
     {
-        i.v = T.R() & s.v;
-        i.w = T.R() & s.w;
+        const tensor& R = T.R();
+        i.v = R & s.v;
+        i.w = R & s.w;
+        i.sX = R & s.sX;
+        i.sTheta = R & s.sTheta;
+        i.sV = R & s.sV;
+        i.sW = R & s.sW;
+        i.dX = R & s.dX;
+        i.dTheta = R & s.dTheta;
     }
     i.local = -1;
     return i;
@@ -109,9 +124,11 @@ void Foam::fiberInteractions::contact::localSegments
 (
     const PtrList<fiber>& fibers,
     const UList<role>& roles,
-    DynamicList<segment>& segs
+    DynamicList<segment>& segs,
+    const UList<fiberIntegrator::load>* loads
 ) const
 {
+    const fiberIntegrator::load none;
     forAll(fibers, fi)
     {
         if (roles[fi] == role::absent)
@@ -119,6 +136,7 @@ void Foam::fiberInteractions::contact::localSegments
             continue;
         }
         const fiber& f = fibers[fi];
+        const fiberIntegrator::load& l = loads ? (*loads)[fi] : none;
         const tensor R(f.R());
         for (label i = 0; i < f.nSegments(); ++i)
         {
@@ -131,13 +149,136 @@ void Foam::fiberInteractions::contact::localSegments
             (
                 segment
                 {
-                    f.id(), i, c - half, c + half, f.segmentDiameter(i),
+                    f.id(), i, f.nSegments(), c - half, c + half,
+                    f.segmentDiameter(i),
                     f.position(), f.velocity(), f.omega(),
-                    roles[fi] == role::fixed ? 0 : f.mass(), fi
+                    roles[fi] == role::fixed ? 0 : f.mass(), fi,
+                    l.sX, l.sTheta, l.sV, l.sW, l.sTau, l.H, l.dX, l.dTheta
                 }
             );
         }
     }
+}
+
+
+Foam::scalar Foam::fiberInteractions::contact::gather
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    DynamicList<segment>& segs,
+    const UList<fiberIntegrator::load>* loads,
+    const scalar skin
+) const
+{
+    localSegments(fibers, roles, segs, loads);
+    const scalar r = reach(segs) + skin;
+    addImages(segs, r);
+    addGhosts(segs, r);
+    return r;
+}
+
+
+Foam::scalar Foam::fiberInteractions::contact::approachLimit
+(
+    const UList<segment>& segs,
+    const UList<FixedList<label, 2>>& cand,
+    const scalar r,
+    const scalar skin
+) const
+{
+    // Candidates: the surfaces' gap g (negative: overlap) may close at the
+    // relative speed of the closest points; the interval lets it reach an
+    // overlap of maxApproach diameters.  Their largest relative speed per
+    // distance of centres, with the fibers' rotation rates, is the velocity
+    // gradient seen by the fibers, lambda
+    scalar h = GREAT;
+    scalar lambda = 0;
+    for (const FixedList<label, 2>& ij : cand)
+    {
+        const segment& A = segs[ij[0]];
+        const segment& B = segs[ij[1]];
+        if (B.local >= 0 && ij[1] < ij[0])
+        {
+            // Both local: the pair once
+            continue;
+        }
+        const segmentDistance::result r =
+            segmentDistance::closest(A.a, A.b, B.a, B.b);
+        const vector vr
+        (
+            (A.v + (A.w ^ (r.a - A.x))) - (B.v + (B.w ^ (r.b - B.x)))
+        );
+        const scalar dist = mag(r.a - r.b);
+        const scalar g = max(dist - 0.5*(A.d + B.d) - range_, 0);
+        const scalar allowed = g + maxApproach_*min(A.d, B.d);
+
+        // The gap closes at the normal relative speed (any speed where the
+        // axes cross)
+        const scalar vn =
+            dist > SMALL*(A.d + B.d)
+          ? max(-(vr & (r.a - r.b))/dist, 0)
+          : mag(vr);
+        if (vn*h > allowed)
+        {
+            h = allowed/vn;
+        }
+        // A sliding contact: friction changes the sliding speed by at
+        // most a tenth in the interval, or the interval is a contact time
+        // (where it stops: it sticks at the next)
+        if (implicit_ && g <= 0 && mu_ > 0)
+        {
+            const pairKey kA{A.fiber, A.seg, B.fiber, B.seg};
+            const pairKey kB{B.fiber, B.seg, A.fiber, A.seg};
+            const scalar delta = 0.5*(A.d + B.d) - dist;
+            const scalar FtMax = mu_*kn_*max(delta, 0);
+            if ((sliding_.found(kA) || sliding_.found(kB)) && FtMax > 0)
+            {
+                const vector n((r.a - r.b)/max(dist, VSMALL));
+                const scalar vt = mag(vr - (vr & n)*n);
+                const scalar m =
+                    A.m > 0 && B.m > 0 ? A.m*B.m/(A.m + B.m) : max(A.m, B.m);
+                const scalar hSlide = max(0.1*vt*m/FtMax, contactTime(m));
+                h = min(h, hSlide);
+            }
+        }
+        const scalar v = mag(vr);
+        const scalar s = mag(0.5*(A.a + A.b - B.a - B.b));
+        if (v > lambda*s)
+        {
+            lambda = v/s;
+        }
+    }
+
+    // Any other pair has centres more than reach + skin apart and surfaces
+    // more than skin: it closes at most at lambda times the centres'
+    // distance, and never faster than the range of all the segments' end
+    // velocities
+    vector vMin(vector::uniform(GREAT));
+    vector vMax(vector::uniform(-GREAT));
+    for (const segment& s : segs)
+    {
+        if (s.local < 0)
+        {
+            continue;
+        }
+        lambda = max(lambda, mag(s.w));
+        for (const point& e : {s.a, s.b})
+        {
+            const vector ve(s.v + (s.w ^ (e - s.x)));
+            vMin = min(vMin, ve);
+            vMax = max(vMax, ve);
+        }
+    }
+    reduce(vMin, minOp<vector>());
+    reduce(vMax, maxOp<vector>());
+    reduce(lambda, maxOp<scalar>());
+    const scalar vFar =
+        vMax.x() < vMin.x() ? 0 : min(mag(vMax - vMin), lambda*r);
+    if (vFar*h > skin)
+    {
+        h = skin/vFar;
+    }
+    return returnReduce(h, minOp<scalar>());
 }
 
 
@@ -233,7 +374,8 @@ void Foam::fiberInteractions::contact::candidates
 (
     const UList<segment>& segs,
     const scalar r,
-    DynamicList<FixedList<label, 2>>& cand
+    DynamicList<FixedList<label, 2>>& cand,
+    const scalar skin
 ) const
 {
     if (segs.empty() || !(r > 0))
@@ -241,8 +383,8 @@ void Foam::fiberInteractions::contact::candidates
         return;
     }
 
-    // Cells of size r over the centres' box; a cell by its integer
-    // coordinates
+    // Cells of size r over the centres' box, with a layer of empty cells
+    // around it, so that every neighbour of an occupied cell exists
     boundBox bb(boundBox::invertedBox);
     List<point> c(segs.size());
     forAll(segs, i)
@@ -250,6 +392,98 @@ void Foam::fiberInteractions::contact::candidates
         c[i] = 0.5*(segs[i].a + segs[i].b);
         bb.add(c[i]);
     }
+    FixedList<int64_t, 3> n;
+    for (direction dim = 0; dim < 3; ++dim)
+    {
+        n[dim] = int64_t(std::floor(bb.span()[dim]/r)) + 3;
+    }
+    if (n[0]*n[1]*n[2] > 8*int64_t(segs.size()) + 4096)
+    {
+        // Sparse: a few segments spread far apart
+        sparseCandidates(segs, c, bb, r, cand, skin);
+        return;
+    }
+    auto key = [&](const point& p)
+    {
+        int64_t k = 0;
+        for (direction dim = 3; dim-- > 0; )
+        {
+            k = k*n[dim] + int64_t(std::floor((p[dim] - bb.min()[dim])/r)) + 1;
+        }
+        return k;
+    };
+
+    // The segments by cell (compressed rows)
+    List<label> cellOf(segs.size());
+    std::vector<label> start(n[0]*n[1]*n[2] + 1, 0);
+    forAll(segs, i)
+    {
+        cellOf[i] = label(key(c[i]));
+        ++start[cellOf[i] + 1];
+    }
+    for (size_t k = 1; k < start.size(); ++k)
+    {
+        start[k] += start[k - 1];
+    }
+    List<label> byCell(segs.size());
+    {
+        std::vector<label> fill(start.begin(), start.end() - 1);
+        forAll(segs, i)
+        {
+            byCell[fill[cellOf[i]]++] = i;
+        }
+    }
+
+    const int64_t sy = n[0];
+    const int64_t sz = n[0]*n[1];
+    forAll(segs, q)
+    {
+        const segment& Q = segs[q];
+        if (Q.local < 0)
+        {
+            continue;
+        }
+        const scalar lQ = mag(Q.b - Q.a) + Q.d;
+        for (int64_t dz = -sz; dz <= sz; dz += sz)
+        {
+            for (int64_t dy = -sy; dy <= sy; dy += sy)
+            {
+                for (int64_t dx = -1; dx <= 1; ++dx)
+                {
+                    const int64_t k = cellOf[q] + dz + dy + dx;
+                    for (label e = start[k]; e < start[k + 1]; ++e)
+                    {
+                        const label p = byCell[e];
+                        const segment& P = segs[p];
+                        const scalar within =
+                            0.5*(lQ + mag(P.b - P.a) + P.d) + range_ + skin;
+                        if
+                        (
+                            P.fiber != Q.fiber
+                         && magSqr(c[p] - c[q]) <= sqr(within)
+                        )
+                        {
+                            cand.append(FixedList<label, 2>{q, p});
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+
+void Foam::fiberInteractions::contact::sparseCandidates
+(
+    const UList<segment>& segs,
+    const UList<point>& c,
+    const boundBox& bb,
+    const scalar r,
+    DynamicList<FixedList<label, 2>>& cand,
+    const scalar skin
+) const
+{
+    // Cells of size r by their integer coordinates, in a hash table
     auto cell = [&](const point& p, const label dim)
     {
         return int64_t(std::floor((p[dim] - bb.min()[dim])/r));
@@ -293,7 +527,7 @@ void Foam::fiberInteractions::contact::candidates
                         const segment& P = segs[p];
                         const scalar within =
                             0.5*(mag(Q.b - Q.a) + mag(P.b - P.a) + Q.d + P.d)
-                          + range_;
+                          + range_ + skin;
                         if
                         (
                             P.fiber != Q.fiber

@@ -128,7 +128,8 @@ void Foam::fiberIntegrators::BDF2::advance
         -f.mass()*(a1*Vn + a2*Vm)/h,
         -(I & (a1*wn + a2*wm))/h,
         wn + rho*(wn - wm),
-        V, w, out, ext
+        V, w, out, ext,
+        (a2/a0)*f.dxPrev(), (a2/a0)*f.dthetaPrev(), h
     );
     if (out && rho > 0)
     {

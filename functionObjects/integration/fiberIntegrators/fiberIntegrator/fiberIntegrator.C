@@ -126,10 +126,132 @@ void addSegment
     addBlock(rhs, 3, Ts + (S & Fs) + (r ^ (f.segmentMass(i)*g)));
 }
 
+//- The interactions' load: explicit force and torque, and the implicit
+//  springs on the displacement at the sub-step's end, dX + dxKnown + V/c,
+//  and dashpots on the velocities
+void addLoad
+(
+    Matrix6& M,
+    Vector6& rhs,
+    const fiber& f,
+    const scalar c,
+    const fiberIntegrator::load& l,
+    const vector& dxKnown,
+    const vector& dthetaKnown,
+    const scalar h
+)
+{
+    addBlock(rhs, 0, l.F);
+    addBlock(rhs, 3, l.M - (f.position() ^ l.F));
+    if (!l.implicit)
+    {
+        return;
+    }
+    const vector dX(l.dX + dxKnown);
+    const vector dT(l.dTheta + dthetaKnown);
+    const scalar tau = l.tau + h;
+    addBlock(M, 0, 0, l.Kxx/c + l.Cxx);
+    addBlock(M, 0, 3, l.Kxt/c + l.Cxt);
+    addBlock(M, 3, 0, l.Ktx/c + l.Ctx);
+    addBlock(M, 3, 3, l.Ktt/c + l.Ctt);
+    addBlock(rhs, 0, tau*l.P - (l.Kxx & dX) - (l.Kxt & dT));
+    addBlock(rhs, 3, tau*l.Q - (l.Ktx & dX) - (l.Ktt & dT));
+}
+
 } // End anonymous namespace
 
 
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fiberIntegrator::load::load()
+:
+    F(Zero),
+    M(Zero),
+    implicit(false),
+    Kxx(Zero),
+    Kxt(Zero),
+    Ktx(Zero),
+    Ktt(Zero),
+    Cxx(Zero),
+    Cxt(Zero),
+    Ctx(Zero),
+    Ctt(Zero),
+    P(Zero),
+    Q(Zero),
+    dX(Zero),
+    dTheta(Zero),
+    tau(0),
+    sX(Zero),
+    sTheta(Zero),
+    sTau(0),
+    sV(Zero),
+    sW(Zero),
+    H(0)
+{}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fiberIntegrator::load::addImplicit
+(
+    const tensor& K,
+    const tensor& C,
+    const vector& r,
+    const vector& vp
+)
+{
+    // The point moves by dX + dTheta x r = dX - S dTheta, S = [r]x; its
+    // force acts at r: torque S F
+    const tensor S(fiberHydrodynamics::crossMatrix(r));
+    implicit = true;
+    Kxx += K;
+    Kxt -= K & S;
+    Ktx += S & K;
+    Ktt -= S & K & S;
+    Cxx += C;
+    Cxt -= C & S;
+    Ctx += S & C;
+    Ctt -= S & C & S;
+    P += K & vp;
+    Q += S & (K & vp);
+}
+
+
+void Foam::fiberIntegrator::load::transform(const vectorTensorTransform& T)
+{
+    // M = sum c x F: with c' = R c + t, F' = R F, M' = R M + t x F'; the
+    // implicit terms are about the centre
+    if (T.hasR())
+    {
+        const tensor& R = T.R();
+        F = R & F;
+        M = R & M;
+        for (tensor* t : {&Kxx, &Kxt, &Ktx, &Ktt, &Cxx, &Cxt, &Ctx, &Ctt})
+        {
+            *t = R & *t & R.T();
+        }
+        for (vector* v : {&P, &Q, &dX, &dTheta, &sX, &sTheta, &sV, &sW})
+        {
+            *v = R & *v;
+        }
+    }
+    M += T.t() ^ F;
+}
+
+
+void Foam::fiberIntegrator::load::record(const fiber& f, const scalar h)
+{
+    dX += f.dxPrev();
+    dTheta += f.dthetaPrev();
+    tau += h;
+    sX += h*dX;
+    sTheta += h*dTheta;
+    sTau += h*tau;
+    sV += h*f.velocity();
+    sW += h*f.omega();
+    H += h;
+}
+
 
 void Foam::fiberIntegrator::predictedCentres
 (
@@ -163,7 +285,10 @@ void Foam::fiberIntegrator::solve
     vector& V,
     vector& w,
     segmentForces* out,
-    const load* ext
+    const load* ext,
+    const vector& dxKnown,
+    const vector& dthetaKnown,
+    const scalar h
 )
 {
     const vector V0(f.velocity());
@@ -181,8 +306,7 @@ void Foam::fiberIntegrator::solve
     addBlock(rhs, 3, bW);
     if (ext)
     {
-        addBlock(rhs, 0, ext->F);
-        addBlock(rhs, 3, ext->M - (f.position() ^ ext->F));
+        addLoad(M, rhs, f, c, *ext, dxKnown, dthetaKnown, h);
     }
 
     fiberHydrodynamics::segmentLaw k;
@@ -220,6 +344,51 @@ void Foam::fiberIntegrator::solve
             out->F[i] = Fs0[i] + (FV0[i] & V) + (Fw0[i] & w);
         }
     }
+}
+
+
+// * * * * * * * * * * * * * * * Global Operators  * * * * * * * * * * * * //
+
+Foam::Ostream& Foam::operator<<
+(
+    Ostream& os,
+    const fiberIntegrator::load& l
+)
+{
+    os  << l.F << token::SPACE << l.M << token::SPACE << l.implicit;
+    if (l.implicit)
+    {
+        for
+        (
+            const tensor& t
+          : {l.Kxx, l.Kxt, l.Ktx, l.Ktt, l.Cxx, l.Cxt, l.Ctx, l.Ctt}
+        )
+        {
+            os << token::SPACE << t;
+        }
+        os  << token::SPACE << l.P << token::SPACE << l.Q;
+    }
+    os  << token::SPACE << l.dX << token::SPACE << l.dTheta
+        << token::SPACE << l.tau << token::SPACE << l.sX
+        << token::SPACE << l.sTheta << token::SPACE << l.sTau
+        << token::SPACE << l.sV << token::SPACE << l.sW
+        << token::SPACE << l.H;
+    return os;
+}
+
+
+Foam::Istream& Foam::operator>>(Istream& is, fiberIntegrator::load& l)
+{
+    l = fiberIntegrator::load();
+    is >> l.F >> l.M >> l.implicit;
+    if (l.implicit)
+    {
+        is  >> l.Kxx >> l.Kxt >> l.Ktx >> l.Ktt >> l.Cxx >> l.Cxt >> l.Ctx
+            >> l.Ctt >> l.P >> l.Q;
+    }
+    is  >> l.dX >> l.dTheta >> l.tau >> l.sX >> l.sTheta >> l.sTau >> l.sV
+        >> l.sW >> l.H;
+    return is;
 }
 
 

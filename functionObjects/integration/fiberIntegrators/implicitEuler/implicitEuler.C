@@ -55,7 +55,7 @@ void Foam::fiberIntegrators::implicitEuler::advance
         f.mass()*f.velocity()/dt,
         (f.inertia(R) & f.omega())/dt,
         f.omega(),
-        V, w, out, ext
+        V, w, out, ext, Zero, Zero, dt
     );
 
     // Eq. 16-17, rigid
