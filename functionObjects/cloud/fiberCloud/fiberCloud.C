@@ -367,10 +367,13 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     scalar tLeft = dt;
     for (bool first = true; ; first = false)
     {
-        const scalar h =
-            active
-          ? interactions_->nextInterval(fibers_, roles(), dt, tLeft)
-          : tLeft;
+        scalar h = tLeft;
+        if (active)
+        {
+            const std::clock_t c0 = std::clock();
+            h = interactions_->nextInterval(fibers_, roles(), dt, tLeft);
+            cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
+        }
         tStopLeft_ = h < tLeft ? tLeft - h : 0;
         if (!first)
         {

@@ -173,7 +173,8 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
     if (implicit_)
     {
         Info<< ", implicit: intervals by the approach of pairs, at most "
-            << maxApproach_ << " diameters each";
+            << maxApproach_ << " diameters each (collisions inelastic"
+            << " where the intervals exceed the contact time)";
     }
     else
     {
@@ -517,17 +518,18 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
         DynamicList<FixedList<label, 2>>& cand = near_.cand;
         segs.clear();
         cand.clear();
+        near_.inReach.clear();
         localSegments(fibers, roles, segs);
         near_.skin = 0.5*reach(segs);
         segs.clear();
         near_.r = gather(fibers, roles, segs, nullptr, near_.skin);
-        candidates(segs, near_.r, cand, near_.skin);
+        candidates(segs, near_.r, cand, near_.skin, &near_.inReach);
         near_.valid = true;
         hMax =
-            min
+            approachLimit
             (
-                approachLimit(segs, cand, near_.r, near_.skin),
-                hLast_ > 0 ? 2*hLast_ : tc
+                segs, cand, near_.r, near_.skin,
+                min(hLast_ > 0 ? 2*hLast_ : tc, tLeft)
             );
     }
     else if (tc < GREAT)
@@ -588,20 +590,7 @@ void Foam::fiberInteractions::contact::interact
     {
         // The search of nextInterval at this time: its pairs within reach
         segs.transfer(near_.segs);
-        for (const FixedList<label, 2>& ij : near_.cand)
-        {
-            const segment& Q = segs[ij[0]];
-            const segment& P = segs[ij[1]];
-            const scalar within =
-                0.5*(mag(Q.b - Q.a) + mag(P.b - P.a) + Q.d + P.d) + range_;
-            if
-            (
-                magSqr(0.5*(Q.a + Q.b - P.a - P.b)) <= sqr(within)
-            )
-            {
-                cand.append(ij);
-            }
-        }
+        cand.transfer(near_.inReach);
         near_.cand.clear();
         near_.valid = false;
     }

@@ -47,8 +47,8 @@ void writeSegment(Ostream& os, const segment& s)
 
 void readSegment(Istream& is, segment& s)
 {
-    is  >> s.fiber >> s.seg >> s.nSeg >> s.a >> s.b >> s.d >> s.x >> s.v >> s.w >> s.m
-        >> s.sX >> s.sTheta >> s.sV >> s.sW >> s.sTau >> s.H >> s.dX
+    is  >> s.fiber >> s.seg >> s.nSeg >> s.a >> s.b >> s.d >> s.x >> s.v
+        >> s.w >> s.m >> s.sX >> s.sTheta >> s.sV >> s.sW >> s.sTau >> s.H >> s.dX
         >> s.dTheta;
     s.local = -1;
 }
@@ -183,7 +183,8 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     const UList<segment>& segs,
     const UList<FixedList<label, 2>>& cand,
     const scalar r,
-    const scalar skin
+    const scalar skin,
+    const scalar hMax
 ) const
 {
     // Candidates: the surfaces' gap g (negative: overlap) may close at the
@@ -191,7 +192,7 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     // overlap of maxApproach diameters.  Their largest relative speed per
     // distance of centres, with the fibers' rotation rates, is the velocity
     // gradient seen by the fibers, lambda
-    scalar h = GREAT;
+    scalar h = hMax;
     scalar lambda = 0;
     for (const FixedList<label, 2>& ij : cand)
     {
@@ -200,6 +201,31 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
         if (B.local >= 0 && ij[1] < ij[0])
         {
             // Both local: the pair once
+            continue;
+        }
+
+        // A pair that cannot limit the interval (its gap at least that of
+        // the centres less the half lengths, its speed at most that of the
+        // centres plus the turning ends) and holds no sliding contact
+        // needs no closest points; its speed per distance still bounds
+        // lambda
+        const vector sAB(0.5*(A.a + A.b - B.a - B.b));
+        const scalar s = mag(sAB);
+        const scalar lA = mag(A.b - A.a);
+        const scalar lB = mag(B.b - B.a);
+        const scalar gLow =
+            s - 0.5*(lA + lB + A.d + B.d) - range_
+          + maxApproach_*min(A.d, B.d);
+        const scalar vUp =
+            mag(A.v - B.v + (A.w ^ (0.5*(A.a + A.b) - A.x))
+          - (B.w ^ (0.5*(B.a + B.b) - B.x)))
+          + 0.5*(mag(A.w)*lA + mag(B.w)*lB);
+        if (gLow > 0 && vUp*h <= gLow)
+        {
+            if (vUp > lambda*s)
+            {
+                lambda = vUp/s;
+            }
             continue;
         }
         const segmentDistance::result r =
@@ -242,7 +268,6 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
             }
         }
         const scalar v = mag(vr);
-        const scalar s = mag(0.5*(A.a + A.b - B.a - B.b));
         if (v > lambda*s)
         {
             lambda = v/s;
@@ -375,7 +400,8 @@ void Foam::fiberInteractions::contact::candidates
     const UList<segment>& segs,
     const scalar r,
     DynamicList<FixedList<label, 2>>& cand,
-    const scalar skin
+    const scalar skin,
+    DynamicList<FixedList<label, 2>>* inReach
 ) const
 {
     if (segs.empty() || !(r > 0))
@@ -392,6 +418,12 @@ void Foam::fiberInteractions::contact::candidates
         c[i] = 0.5*(segs[i].a + segs[i].b);
         bb.add(c[i]);
     }
+    // Half of each segment's length and diameter
+    List<scalar> ext(segs.size());
+    forAll(segs, i)
+    {
+        ext[i] = 0.5*(mag(segs[i].b - segs[i].a) + segs[i].d);
+    }
     FixedList<int64_t, 3> n;
     for (direction dim = 0; dim < 3; ++dim)
     {
@@ -401,6 +433,10 @@ void Foam::fiberInteractions::contact::candidates
     {
         // Sparse: a few segments spread far apart
         sparseCandidates(segs, c, bb, r, cand, skin);
+        if (inReach)
+        {
+            withinReach(segs, cand, *inReach);
+        }
         return;
     }
     auto key = [&](const point& p)
@@ -434,6 +470,21 @@ void Foam::fiberInteractions::contact::candidates
         }
     }
 
+    // What the test needs, in cell order (contiguous in memory)
+    const label nS = segs.size();
+    List<point> cc(nS);
+    List<scalar> ce(nS);
+    List<label> cf(nS);
+    List<bool> cl(nS);
+    forAll(byCell, e)
+    {
+        const label p = byCell[e];
+        cc[e] = c[p];
+        ce[e] = ext[p] + range_ + skin;
+        cf[e] = segs[p].fiber;
+        cl[e] = segs[p].local >= 0;
+    }
+
     const int64_t sy = n[0];
     const int64_t sz = n[0]*n[1];
     forAll(segs, q)
@@ -443,31 +494,61 @@ void Foam::fiberInteractions::contact::candidates
         {
             continue;
         }
-        const scalar lQ = mag(Q.b - Q.a) + Q.d;
+        const point& cq = c[q];
+        const scalar eq = ext[q];
         for (int64_t dz = -sz; dz <= sz; dz += sz)
         {
             for (int64_t dy = -sy; dy <= sy; dy += sy)
             {
-                for (int64_t dx = -1; dx <= 1; ++dx)
+                const int64_t k0 = cellOf[q] + dz + dy - 1;
+                for (label e = start[k0]; e < start[k0 + 3]; ++e)
                 {
-                    const int64_t k = cellOf[q] + dz + dy + dx;
-                    for (label e = start[k]; e < start[k + 1]; ++e)
+                    // Two local segments: the pair once, both orders
+                    const label p = byCell[e];
+                    if ((cl[e] && p < q) || cf[e] == Q.fiber)
                     {
-                        const label p = byCell[e];
-                        const segment& P = segs[p];
-                        const scalar within =
-                            0.5*(lQ + mag(P.b - P.a) + P.d) + range_ + skin;
-                        if
-                        (
-                            P.fiber != Q.fiber
-                         && magSqr(c[p] - c[q]) <= sqr(within)
-                        )
+                        continue;
+                    }
+                    const scalar d2 = magSqr(cc[e] - cq);
+                    if (d2 <= sqr(eq + ce[e]))
+                    {
+                        cand.append(FixedList<label, 2>{q, p});
+                        if (cl[e])
                         {
-                            cand.append(FixedList<label, 2>{q, p});
+                            cand.append(FixedList<label, 2>{p, q});
+                        }
+                        if (inReach && d2 <= sqr(eq + ce[e] - skin))
+                        {
+                            inReach->append(FixedList<label, 2>{q, p});
+                            if (cl[e])
+                            {
+                                inReach->append(FixedList<label, 2>{p, q});
+                            }
                         }
                     }
                 }
             }
+        }
+    }
+}
+
+
+void Foam::fiberInteractions::contact::withinReach
+(
+    const UList<segment>& segs,
+    const UList<FixedList<label, 2>>& cand,
+    DynamicList<FixedList<label, 2>>& inReach
+) const
+{
+    for (const FixedList<label, 2>& ij : cand)
+    {
+        const segment& Q = segs[ij[0]];
+        const segment& P = segs[ij[1]];
+        const scalar within =
+            0.5*(mag(Q.b - Q.a) + mag(P.b - P.a) + Q.d + P.d) + range_;
+        if (magSqr(0.5*(Q.a + Q.b - P.a - P.b)) <= sqr(within))
+        {
+            inReach.append(ij);
         }
     }
 }
