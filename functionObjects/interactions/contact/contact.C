@@ -55,6 +55,41 @@ struct contribution
 };
 
 
+//- The contributions added to the loads
+void applyLoads
+(
+    const PtrList<fiber>& fibers,
+    DynamicList<contribution>& parts,
+    UList<fiberIntegrator::load>& loads
+)
+{
+    // Summed in an order that does not depend on the decomposition: by
+    // fiber, then partner and segments
+    std::sort
+    (
+        parts.begin(),
+        parts.end(),
+        [](const contribution& a, const contribution& b)
+        {
+            return a.key < b.key;
+        }
+    );
+    for (const contribution& cp : parts)
+    {
+        // The explicit force with the dashpot's part C vp, at the contact
+        // point
+        fiberIntegrator::load& l = loads[cp.local];
+        const vector F(cp.F + (cp.C & cp.vp));
+        l.F += F;
+        l.M += (fibers[cp.local].position() + cp.r) ^ F;
+        if (magSqr(cp.K) > 0)
+        {
+            l.addImplicit(cp.K, cp.C, cp.r, cp.vp);
+        }
+    }
+}
+
+
 //- The reduced mass of two fibers (mass 0: fixed, infinite)
 inline scalar reducedMass(const scalar a, const scalar b)
 {
@@ -328,6 +363,41 @@ bool Foam::fiberInteractions::contact::ownsContact
 }
 
 
+void Foam::fiberInteractions::contact::implicitSprings
+(
+    const segment& A,
+    const segment& B,
+    const vector& vA,
+    const vector& vB,
+    const vector& n,
+    const scalar m,
+    const bool sticks,
+    const scalar cSlide,
+    pairLoad& p
+) const
+{
+    // Each side moves against the partner's predicted velocity as if the
+    // partner moved oppositely (a free pair: twice the spring on one
+    // side's motion) or not at all (a fixed one)
+    const bool free = A.m > 0 && B.m > 0;
+    const scalar phi = free ? 2 : 1;
+    p.vp = free ? 0.5*(vA + vB) : (A.m > 0 ? vB : vA);
+    const tensor nn(sqr(n));
+    p.K = (phi*kn_)*nn;
+    p.C = (phi*2*zeta_*std::sqrt(m*kn_))*nn;
+    if (sticks)
+    {
+        const scalar kt = ktRatio_*kn_;
+        p.K += (phi*kt)*(tensor::I - nn);
+        p.C += (phi*2*zeta_*std::sqrt(m*kt))*(tensor::I - nn);
+    }
+    else
+    {
+        p.C += (phi*cSlide)*(tensor::I - nn);
+    }
+}
+
+
 bool Foam::fiberInteractions::contact::pairForce
 (
     const segment& A,
@@ -400,25 +470,7 @@ bool Foam::fiberInteractions::contact::pairForce
         }
         if (implicit_)
         {
-            // Each side moves against the partner's predicted velocity as
-            // if the partner moved oppositely (a free pair: twice the
-            // spring on one side's motion) or not at all (a fixed one)
-            const bool free = A.m > 0 && B.m > 0;
-            const scalar phi = free ? 2 : 1;
-            p.vp = free ? 0.5*(vA + vB) : (A.m > 0 ? vB : vA);
-            const tensor nn(sqr(n));
-            p.K = (phi*kn_)*nn;
-            p.C = (phi*cn)*nn;
-            if (sticks)
-            {
-                const scalar kt = ktRatio_*kn_;
-                p.K += (phi*kt)*(tensor::I - nn);
-                p.C += (phi*2*zeta_*std::sqrt(m*kt))*(tensor::I - nn);
-            }
-            else
-            {
-                p.C += (phi*cSlide)*(tensor::I - nn);
-            }
+            implicitSprings(A, B, vA, vB, n, m, sticks, cSlide, p);
             Fn = kn_*delta;
         }
     }
@@ -574,6 +626,28 @@ void Foam::fiberInteractions::contact::payBack
 }
 
 
+void Foam::fiberInteractions::contact::pairsInReach
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    DynamicList<segment>& segs,
+    DynamicList<FixedList<label, 2>>& cand
+)
+{
+    if (near_.valid)
+    {
+        // The search of nextInterval at this time: its pairs within reach
+        segs.transfer(near_.segs);
+        cand.transfer(near_.inReach);
+        near_.cand.clear();
+        near_.valid = false;
+        return;
+    }
+    const scalar r = gather(fibers, roles, segs);
+    candidates(segs, r, cand);
+}
+
+
 void Foam::fiberInteractions::contact::interact
 (
     const PtrList<fiber>& fibers,
@@ -586,27 +660,14 @@ void Foam::fiberInteractions::contact::interact
     hLast_ = h;
     DynamicList<segment> segs;
     DynamicList<FixedList<label, 2>> cand;
-    if (near_.valid)
-    {
-        // The search of nextInterval at this time: its pairs within reach
-        segs.transfer(near_.segs);
-        cand.transfer(near_.inReach);
-        near_.cand.clear();
-        near_.valid = false;
-    }
-    else
-    {
-        const scalar r = gather(fibers, roles, segs);
-        candidates(segs, r, cand);
-    }
+    pairsInReach(fibers, roles, segs, cand);
 
     springTable next(2*springs_.size() + 16);
     DynamicList<FixedList<label, 2>> touching;
     DynamicList<FixedList<label, 2>> close;
     records_.clear();
 
-    // The loads on this processor's fibers, summed in an order that does
-    // not depend on the decomposition: by fiber, then partner and segments
+    // The loads on this processor's fibers, by pair
     DynamicList<contribution> parts;
     for (const FixedList<label, 2>& ij : cand)
     {
@@ -650,28 +711,7 @@ void Foam::fiberInteractions::contact::interact
             }
         }
     }
-    std::sort
-    (
-        parts.begin(),
-        parts.end(),
-        [](const contribution& a, const contribution& b)
-        {
-            return a.key < b.key;
-        }
-    );
-    for (const contribution& cp : parts)
-    {
-        // The explicit force with the dashpot's part C vp, at the contact
-        // point
-        fiberIntegrator::load& l = loads[cp.local];
-        const vector F(cp.F + (cp.C & cp.vp));
-        l.F += F;
-        l.M += (fibers[cp.local].position() + cp.r) ^ F;
-        if (magSqr(cp.K) > 0)
-        {
-            l.addImplicit(cp.K, cp.C, cp.r, cp.vp);
-        }
-    }
+    applyLoads(fibers, parts, loads);
     payBack(fibers, h, loads);
     springs_.transfer(next);
     if (sliding_.size())
@@ -703,6 +743,56 @@ Foam::vector Foam::fiberInteractions::contact::impulse
         (F + (p.C & p.vp))*s.H
       - (p.K & (s.sX + (s.sTheta ^ r) - p.vp*s.sTau))
       - (p.C & (s.sV + (s.sW ^ r)));
+}
+
+
+void Foam::fiberInteractions::contact::settleFriction
+(
+    const pairKey& k,
+    const pairRecord& p,
+    const segment& Q,
+    const segment& O
+)
+{
+    // A sticking contact's spring is stretched by the relative tangential
+    // displacement of the contact point (lower fiber id first); beyond
+    // Coulomb's bound it slides from the next interval on, held at the
+    // bound.  A sliding contact goes on sliding while its tangential
+    // velocity keeps the direction
+    const scalar sgn = k[0] < k[2] ? 1 : -1;
+    if (p.sticks)
+    {
+        const vector u
+        (
+            sgn
+           *(
+                (Q.dX + (Q.dTheta ^ p.rThis))
+              - (O.dX + (O.dTheta ^ p.rOther))
+            )
+        );
+        vector xi(p.xi + u - (u & p.n)*p.n);
+        if (mag(xi) > p.xiMax)
+        {
+            xi *= p.xiMax/mag(xi);
+            sliding_.set(k, 1);
+        }
+        springs_.set(k, xi);
+        return;
+    }
+    const vector v
+    (
+        sgn*((Q.v + (Q.w ^ p.rThis)) - (O.v + (O.w ^ p.rOther)))
+    );
+    const vector vt(v - (v & p.n)*p.n);
+    if ((vt & p.xi) > 0)
+    {
+        springs_.set(k, (p.xiMax/mag(vt))*vt);
+        sliding_.set(k, mag(vt) < p.vt0 ? 2 : 1);
+    }
+    else
+    {
+        sliding_.erase(k);
+    }
 }
 
 
@@ -742,53 +832,9 @@ void Foam::fiberInteractions::contact::settle
         const segment& Q = segs[*q];
         const segment& O = segs[*o];
 
-        // Friction: a sticking contact's spring is stretched by the
-        // relative tangential displacement of the contact point (lower
-        // fiber id first); beyond Coulomb's bound it slides from the next
-        // interval on, held at the bound.  A sliding contact goes on
-        // sliding while its tangential velocity keeps the direction
         if (mu_ > 0)
         {
-            const scalar sgn = k[0] < k[2] ? 1 : -1;
-            if (p.sticks)
-            {
-                const vector u
-                (
-                    sgn
-                   *(
-                        (Q.dX + (Q.dTheta ^ p.rThis))
-                      - (O.dX + (O.dTheta ^ p.rOther))
-                    )
-                );
-                vector xi(p.xi + u - (u & p.n)*p.n);
-                if (mag(xi) > p.xiMax)
-                {
-                    xi *= p.xiMax/mag(xi);
-                    sliding_.set(k, 1);
-                }
-                springs_.set(k, xi);
-            }
-            else
-            {
-                const vector v
-                (
-                    sgn
-                   *(
-                        (Q.v + (Q.w ^ p.rThis))
-                      - (O.v + (O.w ^ p.rOther))
-                    )
-                );
-                const vector vt(v - (v & p.n)*p.n);
-                if ((vt & p.xi) > 0)
-                {
-                    springs_.set(k, (p.xiMax/mag(vt))*vt);
-                    sliding_.set(k, mag(vt) < p.vt0 ? 2 : 1);
-                }
-                else
-                {
-                    sliding_.erase(k);
-                }
-            }
+            settleFriction(k, p, Q, O);
         }
 
         // A fixed partner, or one that did not move in the interval: no

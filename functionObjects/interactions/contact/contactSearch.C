@@ -48,8 +48,8 @@ void writeSegment(Ostream& os, const segment& s)
 void readSegment(Istream& is, segment& s)
 {
     is  >> s.fiber >> s.seg >> s.nSeg >> s.a >> s.b >> s.d >> s.x >> s.v
-        >> s.w >> s.m >> s.sX >> s.sTheta >> s.sV >> s.sW >> s.sTau >> s.H >> s.dX
-        >> s.dTheta;
+        >> s.w >> s.m >> s.sX >> s.sTheta >> s.sV >> s.sW >> s.sTau >> s.H
+        >> s.dX >> s.dTheta;
     s.local = -1;
 }
 
@@ -86,6 +86,71 @@ boundBox segmentBox(const segment& s, const scalar r)
     bb.max() += vector::uniform(r);
     return bb;
 }
+
+
+//- Segments by cell of a dense grid of cells of size r over the box bb
+//  (n cells per direction, a layer of empty ones around): compressed rows
+//  (start, byCell), and in cell order what the pair test needs: centres,
+//  half length and diameter plus extra, fiber, local
+struct cellGrid
+{
+    List<label> cellOf;
+    std::vector<label> start;
+    List<label> byCell;
+    List<point> cc;
+    List<scalar> ce;
+    List<label> cf;
+    List<bool> cl;
+
+    cellGrid
+    (
+        const UList<segment>& segs,
+        const UList<point>& c,
+        const UList<scalar>& ext,
+        const boundBox& bb,
+        const scalar r,
+        const FixedList<int64_t, 3>& n,
+        const scalar extra
+    )
+    :
+        cellOf(segs.size()),
+        start(n[0]*n[1]*n[2] + 1, 0),
+        byCell(segs.size()),
+        cc(segs.size()),
+        ce(segs.size()),
+        cf(segs.size()),
+        cl(segs.size())
+    {
+        forAll(segs, i)
+        {
+            int64_t k = 0;
+            for (direction dim = 3; dim-- > 0; )
+            {
+                k = k*n[dim]
+                  + int64_t(std::floor((c[i][dim] - bb.min()[dim])/r)) + 1;
+            }
+            cellOf[i] = label(k);
+            ++start[cellOf[i] + 1];
+        }
+        for (size_t k = 1; k < start.size(); ++k)
+        {
+            start[k] += start[k - 1];
+        }
+        std::vector<label> fill(start.begin(), start.end() - 1);
+        forAll(segs, i)
+        {
+            byCell[fill[cellOf[i]]++] = i;
+        }
+        forAll(byCell, e)
+        {
+            const label p = byCell[e];
+            cc[e] = c[p];
+            ce[e] = ext[p] + extra;
+            cf[e] = segs[p].fiber;
+            cl[e] = segs[p].local >= 0;
+        }
+    }
+};
 
 
 } // End anonymous namespace
@@ -178,6 +243,89 @@ Foam::scalar Foam::fiberInteractions::contact::gather
 }
 
 
+Foam::scalar Foam::fiberInteractions::contact::slideLimit
+(
+    const segment& A,
+    const segment& B,
+    const vector& n,
+    const scalar delta,
+    const vector& vr
+) const
+{
+    // A sliding contact: friction changes the sliding speed by at most a
+    // tenth in the interval, or the interval is a contact time (where it
+    // stops: it sticks at the next)
+    const pairKey kA{A.fiber, A.seg, B.fiber, B.seg};
+    const pairKey kB{B.fiber, B.seg, A.fiber, A.seg};
+    const scalar FtMax = mu_*kn_*max(delta, 0);
+    if (!(FtMax > 0) || (!sliding_.found(kA) && !sliding_.found(kB)))
+    {
+        return GREAT;
+    }
+    const scalar vt = mag(vr - (vr & n)*n);
+    const scalar m =
+        A.m > 0 && B.m > 0 ? A.m*B.m/(A.m + B.m) : max(A.m, B.m);
+    return max(0.1*vt*m/FtMax, contactTime(m));
+}
+
+
+Foam::scalar Foam::fiberInteractions::contact::pairLimit
+(
+    const segment& A,
+    const segment& B,
+    const scalar h,
+    scalar& lambda
+) const
+{
+    // A pair that cannot limit the interval (its gap at least that of the
+    // centres less the half lengths, its speed at most that of the centres
+    // plus the turning ends) needs no closest points (it does not touch,
+    // so it does not slide); its speed per distance still bounds lambda
+    const scalar s = mag(0.5*(A.a + A.b - B.a - B.b));
+    const scalar lA = mag(A.b - A.a);
+    const scalar lB = mag(B.b - B.a);
+    const scalar gLow =
+        s - 0.5*(lA + lB + A.d + B.d) - range_ + maxApproach_*min(A.d, B.d);
+    const scalar vUp =
+        mag
+        (
+            A.v - B.v + (A.w ^ (0.5*(A.a + A.b) - A.x))
+          - (B.w ^ (0.5*(B.a + B.b) - B.x))
+        )
+      + 0.5*(mag(A.w)*lA + mag(B.w)*lB);
+    if (gLow > 0 && vUp*h <= gLow)
+    {
+        lambda = max(lambda, vUp/s);
+        return h;
+    }
+
+    // The surfaces' gap g closes at the normal relative speed of the
+    // closest points (any speed where the axes cross); the interval lets
+    // it reach an overlap of maxApproach diameters
+    const segmentDistance::result r =
+        segmentDistance::closest(A.a, A.b, B.a, B.b);
+    const vector vr
+    (
+        (A.v + (A.w ^ (r.a - A.x))) - (B.v + (B.w ^ (r.b - B.x)))
+    );
+    const scalar dist = mag(r.a - r.b);
+    const scalar g = max(dist - 0.5*(A.d + B.d) - range_, 0);
+    const scalar allowed = g + maxApproach_*min(A.d, B.d);
+    const scalar vn =
+        dist > SMALL*(A.d + B.d)
+      ? max(-(vr & (r.a - r.b))/dist, 0)
+      : mag(vr);
+    scalar hp = vn*h > allowed ? allowed/vn : h;
+    if (implicit_ && g <= 0 && mu_ > 0)
+    {
+        const vector n((r.a - r.b)/max(dist, VSMALL));
+        hp = min(hp, slideLimit(A, B, n, 0.5*(A.d + B.d) - dist, vr));
+    }
+    lambda = max(lambda, s > 0 ? mag(vr)/s : 0);
+    return hp;
+}
+
+
 Foam::scalar Foam::fiberInteractions::contact::approachLimit
 (
     const UList<segment>& segs,
@@ -187,90 +335,17 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     const scalar hMax
 ) const
 {
-    // Candidates: the surfaces' gap g (negative: overlap) may close at the
-    // relative speed of the closest points; the interval lets it reach an
-    // overlap of maxApproach diameters.  Their largest relative speed per
-    // distance of centres, with the fibers' rotation rates, is the velocity
-    // gradient seen by the fibers, lambda
+    // The candidates; their largest relative speed per distance of
+    // centres, with the fibers' rotation rates, is the velocity gradient
+    // seen by the fibers, lambda
     scalar h = hMax;
     scalar lambda = 0;
     for (const FixedList<label, 2>& ij : cand)
     {
-        const segment& A = segs[ij[0]];
-        const segment& B = segs[ij[1]];
-        if (B.local >= 0 && ij[1] < ij[0])
+        // Both local: the pair once
+        if (!(segs[ij[1]].local >= 0 && ij[1] < ij[0]))
         {
-            // Both local: the pair once
-            continue;
-        }
-
-        // A pair that cannot limit the interval (its gap at least that of
-        // the centres less the half lengths, its speed at most that of the
-        // centres plus the turning ends) and holds no sliding contact
-        // needs no closest points; its speed per distance still bounds
-        // lambda
-        const vector sAB(0.5*(A.a + A.b - B.a - B.b));
-        const scalar s = mag(sAB);
-        const scalar lA = mag(A.b - A.a);
-        const scalar lB = mag(B.b - B.a);
-        const scalar gLow =
-            s - 0.5*(lA + lB + A.d + B.d) - range_
-          + maxApproach_*min(A.d, B.d);
-        const scalar vUp =
-            mag(A.v - B.v + (A.w ^ (0.5*(A.a + A.b) - A.x))
-          - (B.w ^ (0.5*(B.a + B.b) - B.x)))
-          + 0.5*(mag(A.w)*lA + mag(B.w)*lB);
-        if (gLow > 0 && vUp*h <= gLow)
-        {
-            if (vUp > lambda*s)
-            {
-                lambda = vUp/s;
-            }
-            continue;
-        }
-        const segmentDistance::result r =
-            segmentDistance::closest(A.a, A.b, B.a, B.b);
-        const vector vr
-        (
-            (A.v + (A.w ^ (r.a - A.x))) - (B.v + (B.w ^ (r.b - B.x)))
-        );
-        const scalar dist = mag(r.a - r.b);
-        const scalar g = max(dist - 0.5*(A.d + B.d) - range_, 0);
-        const scalar allowed = g + maxApproach_*min(A.d, B.d);
-
-        // The gap closes at the normal relative speed (any speed where the
-        // axes cross)
-        const scalar vn =
-            dist > SMALL*(A.d + B.d)
-          ? max(-(vr & (r.a - r.b))/dist, 0)
-          : mag(vr);
-        if (vn*h > allowed)
-        {
-            h = allowed/vn;
-        }
-        // A sliding contact: friction changes the sliding speed by at
-        // most a tenth in the interval, or the interval is a contact time
-        // (where it stops: it sticks at the next)
-        if (implicit_ && g <= 0 && mu_ > 0)
-        {
-            const pairKey kA{A.fiber, A.seg, B.fiber, B.seg};
-            const pairKey kB{B.fiber, B.seg, A.fiber, A.seg};
-            const scalar delta = 0.5*(A.d + B.d) - dist;
-            const scalar FtMax = mu_*kn_*max(delta, 0);
-            if ((sliding_.found(kA) || sliding_.found(kB)) && FtMax > 0)
-            {
-                const vector n((r.a - r.b)/max(dist, VSMALL));
-                const scalar vt = mag(vr - (vr & n)*n);
-                const scalar m =
-                    A.m > 0 && B.m > 0 ? A.m*B.m/(A.m + B.m) : max(A.m, B.m);
-                const scalar hSlide = max(0.1*vt*m/FtMax, contactTime(m));
-                h = min(h, hSlide);
-            }
-        }
-        const scalar v = mag(vr);
-        if (v > lambda*s)
-        {
-            lambda = v/s;
+            h = pairLimit(segs[ij[0]], segs[ij[1]], h, lambda);
         }
     }
 
@@ -411,17 +486,14 @@ void Foam::fiberInteractions::contact::candidates
 
     // Cells of size r over the centres' box, with a layer of empty cells
     // around it, so that every neighbour of an occupied cell exists
+    // (c: centres, ext: half of each segment's length and diameter)
     boundBox bb(boundBox::invertedBox);
     List<point> c(segs.size());
+    List<scalar> ext(segs.size());
     forAll(segs, i)
     {
         c[i] = 0.5*(segs[i].a + segs[i].b);
         bb.add(c[i]);
-    }
-    // Half of each segment's length and diameter
-    List<scalar> ext(segs.size());
-    forAll(segs, i)
-    {
         ext[i] = 0.5*(mag(segs[i].b - segs[i].a) + segs[i].d);
     }
     FixedList<int64_t, 3> n;
@@ -439,51 +511,10 @@ void Foam::fiberInteractions::contact::candidates
         }
         return;
     }
-    auto key = [&](const point& p)
-    {
-        int64_t k = 0;
-        for (direction dim = 3; dim-- > 0; )
-        {
-            k = k*n[dim] + int64_t(std::floor((p[dim] - bb.min()[dim])/r)) + 1;
-        }
-        return k;
-    };
-
-    // The segments by cell (compressed rows)
-    List<label> cellOf(segs.size());
-    std::vector<label> start(n[0]*n[1]*n[2] + 1, 0);
-    forAll(segs, i)
-    {
-        cellOf[i] = label(key(c[i]));
-        ++start[cellOf[i] + 1];
-    }
-    for (size_t k = 1; k < start.size(); ++k)
-    {
-        start[k] += start[k - 1];
-    }
-    List<label> byCell(segs.size());
-    {
-        std::vector<label> fill(start.begin(), start.end() - 1);
-        forAll(segs, i)
-        {
-            byCell[fill[cellOf[i]]++] = i;
-        }
-    }
-
-    // What the test needs, in cell order (contiguous in memory)
-    const label nS = segs.size();
-    List<point> cc(nS);
-    List<scalar> ce(nS);
-    List<label> cf(nS);
-    List<bool> cl(nS);
-    forAll(byCell, e)
-    {
-        const label p = byCell[e];
-        cc[e] = c[p];
-        ce[e] = ext[p] + range_ + skin;
-        cf[e] = segs[p].fiber;
-        cl[e] = segs[p].local >= 0;
-    }
+    const cellGrid g(segs, c, ext, bb, r, n, range_ + skin);
+    const List<point>& cc = g.cc;
+    const List<scalar>& ce = g.ce;
+    const List<bool>& cl = g.cl;
 
     const int64_t sy = n[0];
     const int64_t sz = n[0]*n[1];
@@ -500,12 +531,12 @@ void Foam::fiberInteractions::contact::candidates
         {
             for (int64_t dy = -sy; dy <= sy; dy += sy)
             {
-                const int64_t k0 = cellOf[q] + dz + dy - 1;
-                for (label e = start[k0]; e < start[k0 + 3]; ++e)
+                const int64_t k0 = g.cellOf[q] + dz + dy - 1;
+                for (label e = g.start[k0]; e < g.start[k0 + 3]; ++e)
                 {
                     // Two local segments: the pair once, both orders
-                    const label p = byCell[e];
-                    if ((cl[e] && p < q) || cf[e] == Q.fiber)
+                    const label p = g.byCell[e];
+                    if ((cl[e] && p < q) || g.cf[e] == Q.fiber)
                     {
                         continue;
                     }

@@ -42,15 +42,12 @@ bool sameTransform
     return mag(a.t() - b.t()) <= 1e-9*len;
 }
 
-} // End anonymous namespace
-
-
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::List<Foam::vectorTensorTransform> Foam::periodicImages::transforms
+//- The distinct transforms into the periodic patches (cyclic, cyclicAMI
+//  with a transform, processorCyclic) of all processors
+List<vectorTensorTransform> distinctTransforms
 (
     const polyMesh& mesh,
-    label& nBase
+    const scalar len
 )
 {
     // The transforms into each periodic patch of this processor (cyclic,
@@ -83,11 +80,7 @@ Foam::List<Foam::vectorTensorTransform> Foam::periodicImages::transforms
     Pstream::gatherList(all);
     Pstream::scatterList(all);
 
-    // Distinct transforms in pairs {T, T^-1} (one pair per periodic
-    // direction), and the images of every combination of at most one of
-    // each pair (faces, edges and corners of a box periodic in three
-    // directions: 26)
-    const scalar len = mag(mesh.bounds().span());
+    // Distinct ones
     DynamicList<vectorTensorTransform> base;
     for (const List<vectorTensorTransform>& l : all)
     {
@@ -104,6 +97,26 @@ Foam::List<Foam::vectorTensorTransform> Foam::periodicImages::transforms
             }
         }
     }
+    return List<vectorTensorTransform>(std::move(base));
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::List<Foam::vectorTensorTransform> Foam::periodicImages::transforms
+(
+    const polyMesh& mesh,
+    label& nBase
+)
+{
+    // Distinct transforms in pairs {T, T^-1} (one pair per periodic
+    // direction), and the images of every combination of at most one of
+    // each pair (faces, edges and corners of a box periodic in three
+    // directions: 26)
+    const scalar len = mag(mesh.bounds().span());
+    const List<vectorTensorTransform> base(distinctTransforms(mesh, len));
     DynamicList<label> group(base.size(), -1);
     label nGroups = 0;
     forAll(base, i)
