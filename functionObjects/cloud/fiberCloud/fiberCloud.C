@@ -155,6 +155,7 @@ Foam::fiberCloud::fiberCloud
     tEnd_(0),
     dt_(0),
     tStopLeft_(0),
+    tCommon_(0),
     restarted_(restart != nullptr),
     nSubMax_(0),
     nRemote_(0),
@@ -365,8 +366,9 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     // each other ('none': one interval, no call)
     const bool active = interactions_->active();
     scalar tLeft = dt;
-    for (bool first = true; ; first = false)
+    while (true)
     {
+        tCommon_ = tLeft;
         scalar h = tLeft;
         if (active)
         {
@@ -375,14 +377,15 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
             cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
         }
         tStopLeft_ = h < tLeft ? tLeft - h : 0;
-        if (!first)
+
+        // The fibers that reach into the interval run in it; one a feed
+        // releases after its end (less time left) waits
+        for (stepState& st : step_)
         {
-            for (stepState& st : step_)
+            if (st.st == status::done || st.st == status::running)
             {
-                if (st.st == status::done && st.tLeft > tStopLeft_)
-                {
-                    st.st = status::running;
-                }
+                st.st =
+                    st.tLeft > tStopLeft_ ? status::running : status::done;
             }
         }
         if (active)
@@ -392,6 +395,7 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
         advance(tStopLeft_);
         if (active)
         {
+            tCommon_ = tStopLeft_;
             settle();
         }
         if (!(tStopLeft_ > 0))
@@ -464,9 +468,11 @@ Foam::List<Foam::fiberInteraction::role> Foam::fiberCloud::roles() const
     List<role> r(fibers_.size());
     forAll(fibers_, fi)
     {
+        // A fiber a feed releases later in the step is not there yet
         r[fi] =
             step_[fi].st == status::gone ? role::absent
           : fixedSet_[fibers_[fi].setIndex()] ? role::fixed
+          : step_[fi].tLeft < tCommon_ - 1e-9*dt_ ? role::absent
           : role::free;
     }
     return r;
