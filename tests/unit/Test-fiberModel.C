@@ -2131,6 +2131,13 @@ void testSegmentDistance()
 }
 
 
+// Flexible chains: testFlexibleChain.C
+void testFlexibleCantilever();
+void testFlexibleElastica();
+void testFlexibleVibration();
+void testFlexibleStiffLimit();
+
+
 int main()
 {
     FatalError.throwExceptions();
@@ -2156,6 +2163,10 @@ int main()
         testSizes();
         testSubStepStatistics();
         testSegmentDistance();
+        testFlexibleCantilever();
+        testFlexibleElastica();
+        testFlexibleVibration();
+        testFlexibleStiffLimit();
     }
     catch (const Foam::error& err)
     {

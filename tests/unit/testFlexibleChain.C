@@ -1,0 +1,429 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+Description
+    Unit tests of the flexible chain (flexibleChain) against closed forms:
+    the discrete cantilever (tip and uniform load), the elastica (Bisshopp
+    & Drucker), the free-free beam's first frequency, energy and joint
+    gaps over long runs, and the rigid chain's Jeffery period in the stiff
+    limit.  Part of Test-fiberModel.
+
+\*---------------------------------------------------------------------------*/
+
+#include "flexibleChain.H"
+#include "fiberHydrodynamics.H"
+#include "fluidSample.H"
+#include "spheroidResistance.H"
+#include "mathematicalConstants.H"
+#include "IOstreams.H"
+
+#include <cmath>
+#include <sstream>
+
+using namespace Foam;
+using namespace Foam::constant::mathematical;
+
+// The harness of Test-fiberModel.C
+void check(const std::string& name, const bool ok, const std::string& detail);
+scalar relErr(const scalar a, const scalar b);
+std::string fmt(const scalar a, const scalar b, const scalar err);
+scalar chainPeriod
+(
+    const label N,
+    const scalar L,
+    const scalar d,
+    const scalar gammaDot
+);
+
+
+// * * * * * * * * * * * * * * * * Helpers * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// A beam of length 1 along x with EI = 1 and mass 1 per length
+// (d = L/1000: the cross-section's rotary inertia, which the segments keep
+// (Eq. 4), shifts the first frequency by 1.5e-6 only)
+const scalar beamL = 1, beamD = 1e-3, beamEI = 1, beamRhoA = 1;
+
+scalar beamE()
+{
+    return beamEI/(pi*pow4(beamD)/64);
+}
+
+scalar beamRho()
+{
+    return beamRhoA/(pi*sqr(beamD)/4);
+}
+
+flexibleChain beam(const label N, const scalar nu = 0.3)
+{
+    const fiber f
+    (
+        fiber::straight
+        (
+            0, point(0.5*beamL, 0, 0), vector(1, 0, 0), N, beamL/N, beamD,
+            beamRho()
+        )
+    );
+    return flexibleChain(f, beamE(), beamE()/(2*(1 + nu)));
+}
+
+
+//- Static equilibrium of a clamped chain under dead loads: implicit steps
+//  with a light damping until the motion stops; the tip's y
+scalar cantileverTip
+(
+    const label N,
+    const scalar tipLoad,
+    const scalar lineLoad,
+    label& nSteps
+)
+{
+    flexibleChain c(beam(N));
+    c.clamp();
+    const scalar l = beamL/N;
+    List<flexibleChain::segmentLoad> loads(N);
+    forAll(loads, i)
+    {
+        loads[i].f = vector(0, -lineLoad*l, 0);
+        // damping: a time scale of the first mode
+        loads[i].A = (beamRhoA*l*10)*tensor::I;
+        loads[i].D = (beamRhoA*pow3(l)*10)*tensor::I;
+    }
+    const scalar h = 0.05;
+    scalar tip = c.end().y();
+    for (nSteps = 1; nSteps < 200000; ++nSteps)
+    {
+        // the tip load is dead (fixed direction) at the moving tip
+        const vector P(0, -tipLoad, 0);
+        loads[N - 1].f = vector(0, -lineLoad*l, 0) + P;
+        loads[N - 1].t = (0.5*l*c.direction(N - 1)) ^ P;
+        c.step(loads, h);
+        const scalar tipNew = c.end().y();
+        if (mag(tipNew - tip) < 1e-15*mag(tipNew) && nSteps > 10)
+        {
+            tip = tipNew;
+            break;
+        }
+        tip = tipNew;
+    }
+    return tip;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * * Tests  * * * * * * * * * * * * * * * * //
+
+void testFlexibleCantilever()
+{
+    // Small deflection (load 1e-8 EI/L^2: geometric nonlinearity 1e-16)
+    // against the exact discrete chain of N joints (clamp + N - 1),
+    // k_b = EI/l: tip load  v = P L^3/(3 EI) (N+1)(2N+1)/(2 N^2),
+    // uniform load v = w L^4/(8 EI) ((N+1)/N)^2
+    const scalar P = 1e-8, w = 1e-8;
+    scalar errTipPrev = GREAT, errLinePrev = GREAT;
+    bool convTip = true, convLine = true;
+    for (const label N : {1, 2, 5, 10, 20, 40})
+    {
+        label n1 = 0, n2 = 0;
+        const scalar vTip = -cantileverTip(N, P, 0, n1);
+        const scalar vLine = -cantileverTip(N, 0, w, n2);
+        const scalar refTip = P/3*(N + 1)*(2*N + 1)/(2.0*N*N);
+        const scalar refLine = w/8*sqr((N + 1.0)/N);
+        std::ostringstream nm;
+        nm << "flexible.cantilever.N=" << N;
+        check
+        (
+            nm.str() + ".tipLoad.discrete",
+            relErr(vTip, refTip) < 1e-9,
+            fmt(vTip, refTip, relErr(vTip, refTip))
+        );
+        check
+        (
+            nm.str() + ".uniformLoad.discrete",
+            relErr(vLine, refLine) < 1e-9,
+            fmt(vLine, refLine, relErr(vLine, refLine))
+        );
+        const scalar eT = relErr(vTip, P/3), eL = relErr(vLine, w/8);
+        convTip = convTip && eT < errTipPrev;
+        convLine = convLine && eL < errLinePrev;
+        errTipPrev = eT;
+        errLinePrev = eL;
+    }
+    std::ostringstream det;
+    det << "error against the continuum at N = 40: tip " << errTipPrev
+        << ", uniform " << errLinePrev;
+    check
+    (
+        "flexible.cantilever.convergesToContinuum",
+        convTip && convLine && errTipPrev < 0.04 && errLinePrev < 0.06,
+        det.str()
+    );
+}
+
+
+void testFlexibleElastica()
+{
+    // Large deflection under a dead tip load: Bisshopp & Drucker (1945),
+    // v/L = 0.30172 (PL^2/EI = 1) and 0.49346 (2).  The discrete chain's
+    // error is O(1/N) (the clamp joint sits at the wall): Richardson's
+    // extrapolation of N = 40 and 80 removes it.
+    const scalar ref[2] = {0.30172, 0.49346};
+    for (label k = 0; k < 2; ++k)
+    {
+        const scalar P = k + 1;
+        label n = 0;
+        const scalar v40 = -cantileverTip(40, P, 0, n);
+        const scalar v80 = -cantileverTip(80, P, 0, n);
+        const scalar vR = 2*v80 - v40;
+        std::ostringstream nm, det;
+        nm << "flexible.elastica.PL2overEI=" << P;
+        det << "N=40 " << v40 << ", N=80 " << v80 << ", extrapolated "
+            << vR << ", reference " << ref[k] << ", rel. error "
+            << relErr(vR, ref[k]);
+        // the reference has 5 digits
+        check
+        (
+            nm.str(),
+            relErr(vR, ref[k]) < 2e-4
+         && mag(v80 - ref[k]) < mag(v40 - ref[k]),
+            det.str()
+        );
+    }
+}
+
+
+namespace
+{
+
+// The free-free beam's first mode: beta_1 L, sigma and the mode shape
+const scalar beta1L = 4.73004074;
+
+scalar modeSigma()
+{
+    return
+        (std::cosh(beta1L) - std::cos(beta1L))
+       /(std::sinh(beta1L) - std::sin(beta1L));
+}
+
+scalar modePhi(const scalar x)
+{
+    const scalar b = beta1L*x/beamL;
+    return
+        std::cosh(b) + std::cos(b)
+      - modeSigma()*(std::sinh(b) + std::sin(b));
+}
+
+scalar modeSlope(const scalar x)
+{
+    const scalar b = beta1L*x/beamL;
+    return beta1L/beamL
+       *(std::sinh(b) - std::sin(b) - modeSigma()*(std::cosh(b) + std::cos(b)));
+}
+
+
+//- The free-free chain of N segments started with the continuum mode's
+//  velocity (amplitude 1e-6: linear), nPer steps per period Tref: the
+//  period of the upward zero crossings of the modal coordinate
+//  sum m_i phi(x_i) y_i, and the energy lost over 5 periods
+scalar freeFreePeriod
+(
+    const label N,
+    const label nPer,
+    const scalar Tref,
+    scalar& loss
+)
+{
+    flexibleChain c(beam(N));
+    const scalar eps = 1e-6;
+    forAll(c.centres(), i)
+    {
+        const point r(c.centres()[i]);
+        c.set
+        (
+            i, r, c.rotations()[i], vector(0, eps*modePhi(r.x()), 0),
+            vector(0, 0, eps*modeSlope(r.x()))
+        );
+    }
+    const List<flexibleChain::segmentLoad> loads(N);
+    const scalar h = Tref/nPer;
+    const scalar m = beamRhoA*beamL/N;
+    auto modal = [&]()
+    {
+        scalar q = 0;
+        forAll(c.centres(), i)
+        {
+            q += m*modePhi((i + 0.5)*beamL/N)*c.centres()[i].y();
+        }
+        return q;
+    };
+
+    // the energy after the first step (the constraint projection of the
+    // initial velocities)
+    c.step(loads, h);
+    const scalar e0 = c.kineticEnergy() + c.elasticEnergy();
+    scalar qPrev = modal();
+    DynamicList<scalar> up;
+    for (label n = 2; n <= 5*nPer + nPer/2; ++n)
+    {
+        c.step(loads, h);
+        const scalar q = modal();
+        if (qPrev < 0 && q >= 0)
+        {
+            up.append((n - 1 + qPrev/(qPrev - q))*h);
+        }
+        qPrev = q;
+    }
+    loss = 1 - (c.kineticEnergy() + c.elasticEnergy())/e0;
+    return up.size() > 1 ? (up.last() - up.first())/(up.size() - 1) : -1;
+}
+
+} // End anonymous namespace
+
+
+void testFlexibleVibration()
+{
+    // Free-free beam, first bending mode: omega_1 = (beta_1 L)^2
+    // sqrt(EI/(rho A L^4)), beta_1 L = 4.73004
+    const scalar omegaRef =
+        sqr(beta1L)*std::sqrt(beamEI/(beamRhoA*pow4(beamL)));
+    const scalar Tref = twoPi/omegaRef;
+    auto run = [&](const label N, const label nPer, scalar& loss)
+    {
+        return freeFreePeriod(N, nPer, Tref, loss);
+    };
+
+    // The chain's error falls fast with N down to the floor of what the
+    // chain does not discretise: the step's period error (omega h)^2/3 =
+    // 8e-7 and the rotary inertia of the cross-section (Rayleigh beam),
+    // 1e-6; both below 3e-6
+    scalar loss = 0;
+    scalar err[4];
+    std::ostringstream det;
+    det << "period rel. error";
+    const label Ns[4] = {5, 10, 20, 40};
+    for (label k = 0; k < 4; ++k)
+    {
+        const scalar T = run(Ns[k], 4000, loss);
+        err[k] = (T - Tref)/Tref;
+        det << ", N=" << Ns[k] << ": " << err[k];
+    }
+    check
+    (
+        "flexible.vibration.freeFree.firstFrequencyConverges",
+        mag(err[1]) < mag(err[0]) && mag(err[2]) < mag(err[1])
+     && mag(err[2]) < 3e-6 && mag(err[3]) < 3e-6,
+        det.str()
+    );
+
+    // Energy of the undamped chain: implicit Euler damps an oscillation
+    // by (1 + omega^2 h^2)^(-1/2) per step, so the decay exponent
+    // -ln(E/E0) over 5 periods is first order in h and vanishes as h -> 0
+    // (halves with h, to O(omega^2 h^2) = 4e-5)
+    scalar loss1 = 0, loss2 = 0, loss3 = 0;
+    run(10, 1000, loss1);
+    run(10, 2000, loss2);
+    run(10, 4000, loss3);
+    const scalar r1 = -std::log(1 - loss1), r2 = -std::log(1 - loss2);
+    const scalar r3 = -std::log(1 - loss3);
+    std::ostringstream detE;
+    detE << "energy decay exponent over 5 periods at 1000, 2000, 4000 steps"
+        << " per period: " << r1 << ", " << r2 << ", " << r3;
+    check
+    (
+        "flexible.vibration.energyConservedAsStepVanishes",
+        r3 > 0 && mag(r1/r2 - 2) < 2e-3 && mag(r2/r3 - 2) < 2e-3,
+        detE.str()
+    );
+}
+
+
+void testFlexibleStiffLimit()
+{
+    // The stiff chain in simple shear (no inertial drag) turns with the
+    // rigid chain's Jeffery period (chainPeriod, which the rigid scheme
+    // matches to 1e-5); and the joint gaps stay at the step's
+    // linearisation error without drifting: a segment turned by h omega
+    // about its centre moves its end by (l/2)(h omega)^2/2 off the
+    // linearised path, two segments at a joint l (h omega)^2/2, with
+    // omega <= gammaDot
+    const scalar L = 1e-3, d = 2e-5, rho = 1380, mu = 1.6, gammaDot = 200;
+    const label N = 5;
+    const fiberHydrodynamics hydro(1260, false, 1);
+    tensor G(Zero);
+    G.xy() = gammaDot;
+    const scalar dt = 1e-5;
+    const fiber f(fiber::straight(0, Zero, vector(0, 1, 0), N, L/N, d, rho));
+    const scalar Tref = chainPeriod(N, L, d, gammaDot);
+
+    for (const scalar E : {1e16, 1e20})
+    {
+        flexibleChain c(f, E, E/2.6);
+        List<flexibleChain::segmentLoad> loads(N);
+        auto angle = [&]()
+        {
+            const vector p(c.end() - c.start());
+            return std::atan2(p.x(), p.y());
+        };
+        const scalar phi0 = angle();
+        scalar phiPrev = phi0, unwrapped = phi0, T = -1;
+        scalar gapEarly = 0, gapLate = 0;
+        const label nSteps = 120000;
+        for (label n = 1; n <= nSteps; ++n)
+        {
+            forAll(loads, i)
+            {
+                const point& r = c.centres()[i];
+                const fluidSample s((G & r), G, mu);
+                fiberHydrodynamics::segmentLaw k;
+                hydro.law
+                (
+                    f, i, c.rotations()[i].R(), s, c.velocities()[i],
+                    c.omegas()[i], k
+                );
+                flexibleChain::segmentLoad& ld = loads[i];
+                ld.f = (k.Kuu & s.U) + (k.Kuw & s.Omega()) + k.f0;
+                ld.A = k.Kuu;
+                ld.B = k.Kuw;
+                ld.t = (k.Kwu & s.U) + (k.Kww & s.Omega()) + k.t0;
+                ld.C = k.Kwu;
+                ld.D = k.Kww;
+            }
+            c.step(loads, dt);
+            (n <= nSteps/10 ? gapEarly : gapLate) =
+                max(n <= nSteps/10 ? gapEarly : gapLate, c.maxGap());
+            const scalar phi = angle();
+            scalar dphi = phi - phiPrev;
+            if (dphi > pi) dphi -= twoPi;
+            if (dphi < -pi) dphi += twoPi;
+            const scalar next = unwrapped + dphi;
+            if (T < 0 && next >= phi0 + twoPi)
+            {
+                T = (n - 1 + (phi0 + twoPi - unwrapped)/dphi)*dt;
+            }
+            unwrapped = next;
+            phiPrev = phi;
+        }
+        std::ostringstream nm, det;
+        nm << "flexible.stiffLimit.E=" << E;
+        det << fmt(T, Tref, relErr(T, Tref)) << "; max joint gap/l, first"
+            << " tenth " << gapEarly/(L/N) << ", rest " << gapLate/(L/N);
+        check(nm.str() + ".jefferyPeriod", relErr(T, Tref) < 1e-4, det.str());
+        check
+        (
+            nm.str() + ".jointGapNoDrift",
+            gapLate <= 1.001*gapEarly
+         && gapLate <= 1.001*(L/N)*sqr(dt*gammaDot)/2,
+            det.str()
+        );
+    }
+}
