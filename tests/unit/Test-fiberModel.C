@@ -2136,6 +2136,7 @@ void testFlexibleCantilever();
 void testFlexibleElastica();
 void testFlexibleVibration();
 void testFlexibleStiffLimit();
+void testFlexibleState();
 
 
 int main()
@@ -2167,6 +2168,7 @@ int main()
         testFlexibleElastica();
         testFlexibleVibration();
         testFlexibleStiffLimit();
+        testFlexibleState();
     }
     catch (const Foam::error& err)
     {

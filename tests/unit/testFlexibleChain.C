@@ -23,6 +23,8 @@ Description
 #include "spheroidResistance.H"
 #include "mathematicalConstants.H"
 #include "IOstreams.H"
+#include "IStringStream.H"
+#include "OStringStream.H"
 
 #include <cmath>
 #include <sstream>
@@ -426,4 +428,73 @@ void testFlexibleStiffLimit()
             det.str()
         );
     }
+}
+
+
+void testFlexibleState()
+{
+    // A flexible fiber's state through the chain and back (writeBack),
+    // and through a stream (processor transfer, restart): unchanged to
+    // round-off; a rigidly moving chain gives the fiber its rigid
+    // velocities
+    fiber f
+    (
+        fiber::straight(7, point(1, 2, 3), vector(1, 1, 0), 4, 0.25, 0.01, 1e3)
+    );
+    f.setVelocity(vector(0.1, -0.2, 0.3));
+    f.setOmega(vector(0, 0, 2));
+    f.makeFlexible(1e9, 4e8);
+
+    // bend it: one implicit step under opposite tip forces
+    {
+        flexibleChain c(f);
+        List<flexibleChain::segmentLoad> loads(4);
+        loads[0].f = vector(0, 0, 1);
+        loads[3].f = vector(0, 0, -1);
+        c.step(loads, 1e-3);
+        c.writeBack(f, 1e-3);
+    }
+    const flexibleChain a(f);
+
+    OStringStream os;
+    os.precision(17);
+    os << f;
+    IStringStream is(os.str());
+    const fiber g(is);
+    const flexibleChain b(g);
+
+    scalar err = 0;
+    forAll(a.centres(), i)
+    {
+        err = max(err, mag(a.centres()[i] - b.centres()[i]));
+        err = max(err, mag(a.velocities()[i] - b.velocities()[i]));
+        err = max(err, mag(a.omegas()[i] - b.omegas()[i]));
+        err = max(err, mag(a.direction(i) - b.direction(i)));
+    }
+    check
+    (
+        "flexible.state.streamRoundTrip",
+        g.flexible() && err < 1e-12,
+        fmt(err, 0, err)
+    );
+
+    // Rigid motion: the chain of a rigid fiber written back
+    fiber r
+    (
+        fiber::straight(8, point(0, 0, 0), vector(0, 1, 1), 5, 0.2, 0.01, 1e3)
+    );
+    r.setVelocity(vector(1, 0, 0));
+    r.setOmega(vector(0.5, -1, 2));
+    const vector v0(r.velocity()), w0(r.omega());
+    const point x0(r.position());
+    r.makeFlexible(1e9, 4e8);
+    flexibleChain(r).writeBack(r, 0);
+    const scalar e =
+        mag(r.velocity() - v0) + mag(r.omega() - w0) + mag(r.position() - x0);
+    check
+    (
+        "flexible.state.rigidMotionWrittenBack",
+        e < 1e-12,
+        fmt(e, 0, e)
+    );
 }

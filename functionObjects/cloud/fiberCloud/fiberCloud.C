@@ -14,6 +14,8 @@ License
 #include "keywordCheck.H"
 #include "processorPolyPatch.H"
 #include "Switch.H"
+#include "counterRandom.H"
+#include "mathematicalConstants.H"
 
 #include <algorithm>
 #include <ctime>
@@ -151,6 +153,10 @@ Foam::fiberCloud::fiberCloud
     counters_(tracker_.outletPatches(), mesh.boundaryMesh().size()),
     interactions_(fiberInteraction::New(dict, mesh)),
     fixedSet_(),
+    setE_(),
+    setG_(),
+    setKappa_(),
+    flexWork_(),
     images_(),
     tEnd_(0),
     dt_(0),
@@ -201,6 +207,9 @@ Foam::fiberCloud::fiberCloud
     );
     counters_.setSets(setNames);
     fixedSet_ = fiberInjection::fixedSets(injectionDict);
+    fiberInjection::flexibleSets(injectionDict, setE_, setG_);
+    setKappa_ = fiberInjection::curvatures(injectionDict);
+    checkFlexible(dict);
 
     if (restart)
     {
@@ -285,6 +294,10 @@ void Foam::fiberCloud::injectAtStart
         setIndex[fi] = all[fi].setIndex();
     }
     counters_.injectedAtStart(setIndex);
+    forAll(all, fi)
+    {
+        bend(all[fi]);
+    }
 
     if (jeffery_)
     {
@@ -306,10 +319,95 @@ void Foam::fiberCloud::injectAtStart
         }
         Info<< endl;
     }
+    for (fiber& f : all)
+    {
+        makeFlexible(f);
+    }
 
     distribute(injectionDict, all, origins);
 
     Info<< "    Injected " << counters_.nInjected() << " fibers" << endl;
+}
+
+
+void Foam::fiberCloud::bend(fiber& f) const
+{
+    const scalar kappa = setKappa_[f.setIndex()];
+    if (kappa <= 0)
+    {
+        return;
+    }
+    const vector p(f.orientation());
+    vector n;
+    if (constraint_.active())
+    {
+        // In the plane of the case
+        const vector e(vector(1, 1, 1) - constraint_.freeDirections());
+        n = e ^ p;
+    }
+    else
+    {
+        // A plane through the chord at a random angle (from the id)
+        // (about the axis least aligned with the chord)
+        const vector a
+        (
+            mag(p.x()) <= min(mag(p.y()), mag(p.z())) ? vector(1, 0, 0)
+          : mag(p.y()) <= mag(p.z()) ? vector(0, 1, 0) : vector(0, 0, 1)
+        );
+        const vector b1((p ^ a)/mag(p ^ a));
+        const vector b2(p ^ b1);
+        const scalar phi =
+            constant::mathematical::twoPi
+           *counterRandom::uniform(7919, f.id(), 0);
+        n = std::cos(phi)*b1 + std::sin(phi)*b2;
+    }
+    fiber bent
+    (
+        fiber::arc
+        (
+            f.id(), f.position(), p, n, f.nSegments(), f.segmentLength(0),
+            f.segmentDiameter(0), f.segmentDensity(0), kappa
+        )
+    );
+    bent.setIndex(f.setIndex());
+    bent.setVelocity(f.velocity());
+    bent.setOmega(f.omega());
+    bent.location() = f.location();
+    f = bent;
+}
+
+
+void Foam::fiberCloud::makeFlexible(fiber& f) const
+{
+    const scalar E = setE_[f.setIndex()];
+    if (E > 0)
+    {
+        flexibleChain::checkConnected(f);
+        f.makeFlexible(E, setG_[f.setIndex()]);
+    }
+}
+
+
+void Foam::fiberCloud::checkFlexible(const dictionary& dict) const
+{
+    if (max(setE_) <= 0)
+    {
+        return;
+    }
+    if (integrator_->predicts())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Flexible fiber sets (model flexible) are advanced by"
+            << " implicit Euler: entry 'integrator' must be implicitEuler"
+            << exit(FatalIOError);
+    }
+    if (interactions_->active())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Flexible fiber sets (model flexible) with 'interactions' "
+            << interactions_->type() << ": not supported yet (contacts act"
+            << " on rigid fibers)" << exit(FatalIOError);
+    }
 }
 
 

@@ -290,6 +290,7 @@ void Foam::fiberCloud::release
             fiber* fPtr = placed.set(slot, nullptr).ptr();
             fPtr->setId(id);
             fiber& f = *fPtr;
+            bend(f);
             if (jeffery_)
             {
                 f.jefferyCorrection();
@@ -305,6 +306,7 @@ void Foam::fiberCloud::release
                 sampler_.interpolate(f.location(), s);
                 f.setVelocity(constraint_.constrain(s.U));
             }
+            makeFlexible(f);
             events_.record(f, tRel, fiberEventLog::injected, feed.patch());
             fibers_.append(fPtr);
             tLeft.append(max(t1 - tRel, scalar(0)));

@@ -233,7 +233,7 @@ Foam::scalarList Foam::fiberCloud::gatherSegments() const
             (
                 (0.5*f.segmentLength(i))*f.segmentDirection(R, i)
             );
-            const vector v(f.velocity() + (f.omega() ^ r));
+            const vector v(f.segmentVelocity(R, i));
             rec[k++] = f.id();
             for
             (

@@ -312,11 +312,21 @@ void Foam::fiberCloud::finish
     (
         buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_
     );
-    integrator_->advance
-    (
-        f, s, hydro_, g, h, coupling_.valid() ? &forces_ : nullptr,
-        interactions_->active() ? &step_[fi].load : nullptr
-    );
+    if (f.flexible())
+    {
+        flexWork_.advance
+        (
+            f, s, hydro_, g, h, coupling_.valid() ? &forces_ : nullptr
+        );
+    }
+    else
+    {
+        integrator_->advance
+        (
+            f, s, hydro_, g, h, coupling_.valid() ? &forces_ : nullptr,
+            interactions_->active() ? &step_[fi].load : nullptr
+        );
+    }
     constraint_.constrain(f);
 
     // The response to implicit contacts is no error of the sub-step: the

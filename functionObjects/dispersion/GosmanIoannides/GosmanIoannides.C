@@ -137,8 +137,7 @@ Foam::scalar Foam::fiberDispersions::GosmanIoannides::correct
             }
             // tau_i = m_i/(3 pi eta l Y^A) = m_i/(eta 6 pi a Y^A)
             const scalar tau = f.segmentMass(i)/(s[i].mu*f.kAp(i));
-            const vector r(f.segmentOffset(R, i));
-            const vector vSeg(f.velocity() + (f.omega() ^ r));
+            const vector vSeg(f.segmentVelocity(R, i));
             tInteraction = min
             (
                 tInteraction,

@@ -40,16 +40,6 @@ void Foam::fiber::calcProperties()
         mSeg_[i] = mi;
         m_ += mi;
 
-        // Eq. 4: segment about its own centre
-        const symmTensor zz(sqr(z0_[i]));
-        const symmTensor Ii =
-            (mi*sqr(d)/8)*zz
-          + (mi*sqr(d)/16 + mi*sqr(l)/12)*(symmTensor::I - zz);
-
-        // Eq. 5: parallel-axis theorem about the centre of mass
-        const vector& r = s0_[i];
-        I0_ += Ii + mi*((r & r)*symmTensor::I - sqr(r));
-
         // Eq. 8-11 with a = l/2
         const scalar re = spheroidResistance::coxAspectRatio(l/d);
         const spheroidResistance res(re);
@@ -59,6 +49,29 @@ void Foam::fiber::calcProperties()
         kCx_[i] = 8*pi*pow3(a)*res.XC;
         kCp_[i] = alpha_*8*pi*pow3(a)*res.YC;
         kH_[i] = alpha_*8*pi*pow3(a)*res.YH;
+    }
+    calcInertia();
+}
+
+
+void Foam::fiber::calcInertia()
+{
+    I0_ = Zero;
+    forAll(l_, i)
+    {
+        const scalar l = l_[i];
+        const scalar d = d_[i];
+        const scalar mi = mSeg_[i];
+
+        // Eq. 4: segment about its own centre
+        const symmTensor zz(sqr(z0_[i]));
+        const symmTensor Ii =
+            (mi*sqr(d)/8)*zz
+          + (mi*sqr(d)/16 + mi*sqr(l)/12)*(symmTensor::I - zz);
+
+        // Eq. 5: parallel-axis theorem about the centre of mass
+        const vector& r = s0_[i];
+        I0_ += Ii + mi*((r & r)*symmTensor::I - sqr(r));
     }
 }
 
@@ -103,6 +116,12 @@ Foam::fiber::fiber
     eddyTime_(0),
     nDraws_(0),
     nSubSteps_(Zero),
+    E_(0),
+    G_(0),
+    z0Rest_(),
+    Q_(),
+    vSeg_(),
+    wSeg_(),
     location_(),
     segmentLocations_(lengths.size())
 {
@@ -154,6 +173,58 @@ Foam::fiber Foam::fiber::straight
         id,
         centres,
         vectorList(nSegments, p),
+        scalarList(nSegments, segmentLength),
+        scalarList(nSegments, diameter),
+        scalarList(nSegments, density),
+        p
+    );
+}
+
+
+Foam::fiber Foam::fiber::arc
+(
+    const label id,
+    const point& centre,
+    const vector& direction,
+    const vector& normal,
+    const label nSegments,
+    const scalar segmentLength,
+    const scalar diameter,
+    const scalar density,
+    const scalar kappa
+)
+{
+    const vector p(direction/mag(direction));
+    vector n(normal - (normal & p)*p);
+    n /= mag(n);
+    const scalar alpha = kappa*segmentLength;
+
+    // Segment i turned by (i - (N - 1)/2) alpha, chained end to end
+    vectorList centres(nSegments), dirs(nSegments);
+    point end(Zero);
+    forAll(centres, i)
+    {
+        const scalar theta = (i - 0.5*(nSegments - 1))*alpha;
+        dirs[i] = std::cos(theta)*p + std::sin(theta)*n;
+        centres[i] = end + 0.5*segmentLength*dirs[i];
+        end += segmentLength*dirs[i];
+    }
+    // Equal masses: the centre of mass is the mean of the centres
+    point mean(Zero);
+    for (const point& c : centres)
+    {
+        mean += c/nSegments;
+    }
+    for (point& c : centres)
+    {
+        c += centre - mean;
+    }
+
+    return fiber
+    (
+        id,
+        centres,
+        dirs,
         scalarList(nSegments, segmentLength),
         scalarList(nSegments, diameter),
         scalarList(nSegments, density),
@@ -278,6 +349,97 @@ void Foam::fiber::transform(const vectorTensorTransform& T)
     vPrev_ = R & vPrev_;
     omegaPrev_ = R & omegaPrev_;
     psi_ = R & psi_;
+    for (vector& vi : vSeg_)
+    {
+        vi = R & vi;
+    }
+    for (vector& wi : wSeg_)
+    {
+        wi = R & wi;
+    }
+}
+
+
+void Foam::fiber::makeFlexible(const scalar E, const scalar G)
+{
+    E_ = E;
+    G_ = G;
+    z0Rest_ = z0_;
+    Q_.setSize(l_.size());
+    Q_ = quaternion::I;
+    vSeg_.setSize(l_.size());
+    wSeg_.setSize(l_.size());
+    const tensor R(this->R());
+    forAll(l_, i)
+    {
+        vSeg_[i] = v_ + (omega_ ^ (R & s0_[i]));
+        wSeg_[i] = omega_;
+    }
+}
+
+
+void Foam::fiber::restoreShape(const motion& m)
+{
+    s0_ = m.s0;
+    Q_ = m.Q;
+    vSeg_ = m.vSeg;
+    wSeg_ = m.wSeg;
+    forAll(z0_, i)
+    {
+        z0_[i] = Q_[i].R() & z0Rest_[i];
+    }
+    calcInertia();
+}
+
+
+void Foam::fiber::setFlexibleState
+(
+    const point& x,
+    const quaternion& q,
+    const vector& v,
+    const vector& omega,
+    const vectorList& s0,
+    const List<quaternion>& Q,
+    const vectorList& vSeg,
+    const vectorList& wSeg,
+    const scalar h
+)
+{
+    dxPrev_ = x - x_;
+    dthetaPrev_ = R() & rotationVectorOf(conjugate(q_)*q);
+    vPrev_ = v_;
+    omegaPrev_ = omega_;
+    hPrev_ = h;
+
+    x_ = x;
+    q_ = q;
+    v_ = v;
+    omega_ = omega;
+    s0_ = s0;
+    Q_ = Q;
+    vSeg_ = vSeg;
+    wSeg_ = wSeg;
+    forAll(z0_, i)
+    {
+        z0_[i] = Q_[i].R() & z0Rest_[i];
+    }
+    calcInertia();
+}
+
+
+Foam::vector Foam::fiber::rotationVectorOf(const quaternion& q)
+{
+    // q and -q are the same rotation: the angle in [0, pi]
+    const scalar sgn = q.w() < 0 ? -1 : 1;
+    const scalar w = sgn*q.w();
+    const vector v(sgn*q.v());
+    const scalar s = mag(v);
+    if (s < 1e-8)
+    {
+        // 2 atan(s/w)/s by its series
+        return (2/w)*(1 - sqr(s/w)/3)*v;
+    }
+    return (2*std::atan2(s, w)/s)*v;
 }
 
 

@@ -44,9 +44,19 @@ Foam::fiber::fiber(Istream& is)
     eddyTime_(readScalar(is)),
     nDraws_(readLabel(is)),
     nSubSteps_(is),
+    E_(readScalar(is)),
+    G_(readScalar(is)),
+    z0Rest_(),
+    Q_(),
+    vSeg_(),
+    wSeg_(),
     location_(),
     segmentLocations_(l_.size())
 {
+    if (E_ > 0)
+    {
+        is >> z0Rest_ >> Q_ >> vSeg_ >> wSeg_;
+    }
     is.check(FUNCTION_NAME);
     calcProperties();
 }
@@ -79,7 +89,14 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
         << f.psi_ << token::SPACE
         << f.eddyTime_ << token::SPACE
         << f.nDraws_ << token::SPACE
-        << f.nSubSteps_;
+        << f.nSubSteps_ << token::SPACE
+        << f.E_ << token::SPACE
+        << f.G_;
+    if (f.E_ > 0)
+    {
+        os  << token::SPACE << f.z0Rest_ << token::SPACE << f.Q_
+            << token::SPACE << f.vSeg_ << token::SPACE << f.wSeg_;
+    }
 
     os.check(FUNCTION_NAME);
     return os;

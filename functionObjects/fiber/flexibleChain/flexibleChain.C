@@ -48,12 +48,136 @@ inline void addTo(Vector9& b, const label r, const vector& v)
     }
 }
 
+//- Solve D [X y] = [U b] in place (X over U, y over b) by Gaussian
+//  elimination with partial pivoting; U's columns V are zero (and so are
+//  X's); without U (the last block) b only.  D is overwritten.
+void solveBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
+{
+    // The right-hand side columns that can be non-zero: lambda and W
+    static const label cols[6] = {0, 1, 2, 6, 7, 8};
+    const label nc = withU ? 6 : 0;
+    for (label k = 0; k < 9; ++k)
+    {
+        label p = k;
+        for (label r = k + 1; r < 9; ++r)
+        {
+            if (std::abs(D(r, k)) > std::abs(D(p, k)))
+            {
+                p = r;
+            }
+        }
+        if (p != k)
+        {
+            D.row(k).swap(D.row(p));
+            U.row(k).swap(U.row(p));
+            std::swap(b(k), b(p));
+        }
+        const double inv = 1/D(k, k);
+        for (label r = k + 1; r < 9; ++r)
+        {
+            const double f = D(r, k)*inv;
+            if (f == 0)
+            {
+                continue;
+            }
+            for (label c = k + 1; c < 9; ++c)
+            {
+                D(r, c) -= f*D(k, c);
+            }
+            for (label j = 0; j < nc; ++j)
+            {
+                U(r, cols[j]) -= f*U(k, cols[j]);
+            }
+            b(r) -= f*b(k);
+        }
+    }
+    for (label k = 8; k >= 0; --k)
+    {
+        const double inv = 1/D(k, k);
+        for (label c = k + 1; c < 9; ++c)
+        {
+            const double d = D(k, c);
+            if (d == 0)
+            {
+                continue;
+            }
+            for (label j = 0; j < nc; ++j)
+            {
+                U(k, cols[j]) -= d*U(c, cols[j]);
+            }
+            b(k) -= d*b(c);
+        }
+        for (label j = 0; j < nc; ++j)
+        {
+            U(k, cols[j]) *= inv;
+        }
+        b(k) *= inv;
+    }
+}
+
+
+//- D -= L X and b -= L y, with L's non-zero rows (lambda, W) and columns
+//  (V, W) and X's non-zero columns (lambda, W)
+void subtractProduct
+(
+    const Matrix9& L,
+    const Matrix9& X,
+    const Vector9& y,
+    Matrix9& D,
+    Vector9& b
+)
+{
+    static const label rows[6] = {0, 1, 2, 6, 7, 8};
+    static const label inner[6] = {3, 4, 5, 6, 7, 8};
+    for (const label r : rows)
+    {
+        for (const label k : inner)
+        {
+            const double l = L(r, k);
+            if (l == 0)
+            {
+                continue;
+            }
+            for (const label c : rows)
+            {
+                D(r, c) -= l*X(k, c);
+            }
+            b(r) -= l*y(k);
+        }
+    }
+}
+
+
 inline tensor crossOf(const vector& c)
 {
     return fiberHydrodynamics::crossMatrix(c);
 }
 
 } // End anonymous namespace
+
+
+struct Foam::flexibleChain::blocks
+{
+    //- Diagonal, lower and upper blocks and right-hand sides
+    List<Matrix9> D, L, U;
+    List<Vector9> b;
+
+    //- Sized for N segments, zero
+    void reset(const label N)
+    {
+        D.setSize(N);
+        L.setSize(N);
+        U.setSize(N);
+        b.setSize(N);
+        for (label i = 0; i < N; ++i)
+        {
+            D[i].setZero();
+            L[i].setZero();
+            U[i].setZero();
+            b[i].setZero();
+        }
+    }
+};
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -76,70 +200,49 @@ Foam::flexibleChain::flexibleChain
     const scalar G
 )
 :
-    z0_(f.nSegments()),
-    l_(f.nSegments()),
-    d_(f.nSegments()),
-    m_(f.nSegments()),
-    Iax_(f.nSegments()),
-    Ip_(f.nSegments()),
-    kb_(max(f.nSegments() - 1, label(0))),
-    kt_(kb_.size()),
-    t0_(kb_.size()),
     E_(E),
     G_(G),
-    r_(f.nSegments()),
-    q_(f.nSegments()),
-    v_(f.nSegments()),
-    w_(f.nSegments()),
     clamped_(false),
     xClamp_(Zero),
     qClamp_(quaternion::I)
 {
-    const label N = f.nSegments();
+    checkConnected(f);
+    geometry(f);
     const tensor R(f.R());
     const quaternion q(R);
     forAll(l_, i)
     {
-        z0_[i] = f.bodyDirection(i);
-        l_[i] = f.segmentLength(i);
-        m_[i] = f.segmentMass(i);
-        d_[i] = f.segmentDiameter(i);
-        const scalar d2 = sqr(d_[i]);
-
-        // Eq. 4
-        Iax_[i] = m_[i]*d2/8;
-        Ip_[i] = m_[i]*(d2/16 + sqr(l_[i])/12);
-
         const vector s(R & f.bodyOffset(i));
         r_[i] = f.position() + s;
         q_[i] = q;
         v_[i] = f.velocity() + (f.omega() ^ s);
         w_[i] = f.omega();
     }
-
-    for (label j = 0; j + 1 < N; ++j)
-    {
-        const vector gap
-        (
-            f.bodyOffset(j) + 0.5*l_[j]*z0_[j]
-          - f.bodyOffset(j + 1) + 0.5*l_[j + 1]*z0_[j + 1]
-        );
-        if (mag(gap) > 1e-9*(l_[j] + l_[j + 1]))
-        {
-            FatalErrorInFunction
-                << "Segments " << j << " and " << j + 1 << " of fiber "
-                << f.id() << " do not meet end to end (gap " << mag(gap)
-                << "): a flexible fiber is a connected chain"
-                << exit(FatalError);
-        }
-        const scalar lj = 0.5*(l_[j] + l_[j + 1]);
-        const scalar d4 =
-            pow4(min(f.segmentDiameter(j), f.segmentDiameter(j + 1)));
-        kb_[j] = E*constant::mathematical::pi*d4/64/lj;
-        kt_[j] = G*constant::mathematical::pi*d4/32/lj;
-        t0_[j] = normalised(z0_[j] + z0_[j + 1]);
-    }
 }
+
+
+Foam::flexibleChain::flexibleChain(const fiber& f)
+:
+    flexibleChain()
+{
+    assign(f);
+}
+
+
+Foam::flexibleChain::flexibleChain()
+:
+    E_(0),
+    G_(0),
+    clamped_(false),
+    xClamp_(Zero),
+    qClamp_(quaternion::I)
+{}
+
+
+Foam::flexibleChain::flexibleChain(flexibleChain&&) = default;
+
+
+Foam::flexibleChain::~flexibleChain() = default;
 
 
 // * * * * * * * * * * * * * * Static Functions  * * * * * * * * * * * * * * //
@@ -190,19 +293,58 @@ void Foam::flexibleChain::moduli
 }
 
 
-Foam::vector Foam::flexibleChain::rotationVector(const quaternion& q)
+void Foam::flexibleChain::advance
+(
+    fiber& f,
+    const UList<fluidSample>& s,
+    const fiberHydrodynamics& hydro,
+    const vector& g,
+    const scalar h,
+    fiberIntegrator::segmentForces* forces
+)
 {
-    // q and -q are the same rotation: take the angle in [0, pi]
-    const scalar sgn = q.w() < 0 ? -1 : 1;
-    const scalar w = sgn*q.w();
-    const vector v(sgn*q.v());
-    const scalar s = mag(v);
-    if (s < 1e-8)
+    const label N = f.nSegments();
+    const tensor R(f.R());
+    List<segmentLoad>& loads = loads_;
+    loads.setSize(N);
+    vectorList& Fh = Fh_;
+    Fh.setSize(N);
+    forAll(loads, i)
     {
-        // 2 atan(s/w)/s by its series
-        return (2/w)*(1 - sqr(s/w)/3)*v;
+        fiberHydrodynamics::segmentLaw k;
+        hydro.law
+        (
+            f, i, R, s[i], f.segmentVelocity(R, i), f.segmentOmega(i), k
+        );
+        const vector Omega(s[i].Omega());
+        segmentLoad& ld = loads[i];
+        ld.f = (k.Kuu & s[i].U) + (k.Kuw & Omega) + k.f0;
+        ld.A = k.Kuu;
+        ld.B = k.Kuw;
+        ld.t = (k.Kwu & s[i].U) + (k.Kww & Omega) + k.t0;
+        ld.C = k.Kwu;
+        ld.D = k.Kww;
+        if (forces)
+        {
+            Fh[i] = ld.f;
+        }
+        ld.f += f.segmentMass(i)*g;
     }
-    return (2*std::atan2(s, w)/s)*v;
+
+    assign(f);
+    step(loads, h);
+    if (forces)
+    {
+        forces->F.setSize(N);
+        forces->K.setSize(N);
+        forAll(loads, i)
+        {
+            forces->F[i] =
+                Fh[i] - (loads[i].A & v_[i]) - (loads[i].B & w_[i]);
+            forces->K[i] = tr(loads[i].A)/3;
+        }
+    }
+    writeBack(f, h);
 }
 
 
@@ -217,13 +359,100 @@ void Foam::flexibleChain::joint
     vector& theta
 )
 {
-    const vector thetaBody(rotationVector(conjugate(qa)*qb));
+    const vector thetaBody(fiber::rotationVectorOf(conjugate(qa)*qb));
     const tensor Ra(qa.R());
     theta = Ra & thetaBody;
     const tensor Rmid((qa*fiber::rotationQuaternion(0.5*thetaBody)).R());
     const vector t(Rmid & t0);
     const tensor tt(t*t);
     K = kb*(tensor::I - tt) + kt*tt;
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+void Foam::flexibleChain::checkConnected(const fiber& f)
+{
+    for (label j = 0; j + 1 < f.nSegments(); ++j)
+    {
+        const vector gap
+        (
+            f.bodyOffset(j) + 0.5*f.segmentLength(j)*f.bodyDirection(j)
+          - f.bodyOffset(j + 1)
+          + 0.5*f.segmentLength(j + 1)*f.bodyDirection(j + 1)
+        );
+        if
+        (
+            mag(gap)
+          > 1e-9*(f.segmentLength(j) + f.segmentLength(j + 1))
+        )
+        {
+            FatalErrorInFunction
+                << "Segments " << j << " and " << j + 1 << " of fiber "
+                << f.id() << " do not meet end to end (gap " << mag(gap)
+                << "): a flexible fiber is a connected chain"
+                << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::flexibleChain::assign(const fiber& f)
+{
+    E_ = f.youngsModulus();
+    G_ = f.shearModulus();
+    clamped_ = false;
+    geometry(f);
+    const tensor R(f.R());
+    const quaternion q(R);
+    forAll(l_, i)
+    {
+        r_[i] = f.position() + (R & f.bodyOffset(i));
+        q_[i] = normalize(q*f.segmentRotation(i));
+        v_[i] = f.segmentVelocity(R, i);
+        w_[i] = f.segmentOmega(i);
+    }
+}
+
+
+void Foam::flexibleChain::geometry(const fiber& f)
+{
+    const label N = f.nSegments();
+    const bool flex = f.flexible();
+    z0_.setSize(N);
+    l_.setSize(N);
+    d_.setSize(N);
+    m_.setSize(N);
+    Iax_.setSize(N);
+    Ip_.setSize(N);
+    r_.setSize(N);
+    q_.setSize(N);
+    v_.setSize(N);
+    w_.setSize(N);
+    forAll(l_, i)
+    {
+        z0_[i] = flex ? f.restDirection(i) : f.bodyDirection(i);
+        l_[i] = f.segmentLength(i);
+        d_[i] = f.segmentDiameter(i);
+        m_[i] = f.segmentMass(i);
+
+        // Eq. 4
+        Iax_[i] = m_[i]*sqr(d_[i])/8;
+        Ip_[i] = m_[i]*(sqr(d_[i])/16 + sqr(l_[i])/12);
+    }
+
+    const label nJ = max(N - 1, label(0));
+    kb_.setSize(nJ);
+    kt_.setSize(nJ);
+    t0_.setSize(nJ);
+    for (label j = 0; j < nJ; ++j)
+    {
+        const scalar lj = 0.5*(l_[j] + l_[j + 1]);
+        const scalar d4 = pow4(min(d_[j], d_[j + 1]));
+        kb_[j] = E_*constant::mathematical::pi*d4/64/lj;
+        kt_[j] = G_*constant::mathematical::pi*d4/32/lj;
+        t0_[j] = normalised(z0_[j] + z0_[j + 1]);
+    }
 }
 
 
@@ -273,25 +502,6 @@ void Foam::flexibleChain::clamp()
 }
 
 
-struct Foam::flexibleChain::blocks
-{
-    //- Diagonal, lower and upper blocks and right-hand sides
-    List<Matrix9> D, L, U;
-    List<Vector9> b;
-
-    explicit blocks(const label N)
-    :
-        D(N), L(N), U(N), b(N)
-    {
-        for (label i = 0; i < N; ++i)
-        {
-            D[i].setZero();
-            L[i].setZero();
-            U[i].setZero();
-            b[i].setZero();
-        }
-    }
-};
 
 
 void Foam::flexibleChain::assembleSegment
@@ -385,7 +595,12 @@ void Foam::flexibleChain::step
 {
     // Block i: rows and columns [lambda_{i-1}, V_i, W_i]
     const label N = nSegments();
-    blocks B(N);
+    if (!work_)
+    {
+        work_.reset(new blocks());
+    }
+    blocks& B = *work_;
+    B.reset(N);
     for (label i = 0; i < N; ++i)
     {
         assembleSegment(i, loads[i], h, B);
@@ -395,22 +610,22 @@ void Foam::flexibleChain::step
         }
     }
 
-    // Block tridiagonal elimination (O(N))
-    List<Eigen::PartialPivLU<Matrix9>> lu(N);
-    lu[0].compute(B.D[0]);
-    for (label i = 1; i < N; ++i)
+    // Block tridiagonal elimination (O(N)): X_i = D_i'^-1 U_i,
+    // y_i = D_i'^-1 b_i', D_{i+1}' = D_{i+1} - L_{i+1} X_i, ...; then
+    // x_i = y_i - X_i x_{i+1}
+    List<Matrix9>& X = B.U;
+    for (label i = 0; i < N; ++i)
     {
-        const Matrix9 X(lu[i - 1].solve(B.U[i - 1]));
-        const Vector9 y(lu[i - 1].solve(B.b[i - 1]));
-        B.D[i] -= B.L[i]*X;
-        B.b[i] -= B.L[i]*y;
-        lu[i].compute(B.D[i]);
+        if (i > 0)
+        {
+            subtractProduct(B.L[i], X[i - 1], B.b[i - 1], B.D[i], B.b[i]);
+        }
+        solveBlock(B.D[i], X[i], B.b[i], i + 1 < N);
     }
-    List<Vector9> x(N);
-    x[N - 1] = lu[N - 1].solve(B.b[N - 1]);
+    List<Vector9>& x = B.b;
     for (label i = N - 2; i >= 0; --i)
     {
-        x[i] = lu[i].solve(B.b[i] - B.U[i]*x[i + 1]);
+        x[i] -= X[i]*x[i + 1];
     }
 
     // Move
@@ -423,6 +638,44 @@ void Foam::flexibleChain::step
         r_[i] += h*V;
         q_[i] = normalize(fiber::rotationQuaternion(h*W)*q_[i]);
     }
+}
+
+
+void Foam::flexibleChain::writeBack(fiber& f, const scalar h) const
+{
+    // The fiber's frame: the centre of mass and the middle segment's
+    // rotation; its velocities: those of the rigid motion with the
+    // chain's momentum and angular momentum about the centre of mass
+    const label N = nSegments();
+    const point xG(centreOfMass());
+    scalar m = 0;
+    vector P(Zero), LG(Zero);
+    tensor IG(Zero);
+    for (label i = 0; i < N; ++i)
+    {
+        const vector s(r_[i] - xG);
+        const tensor Ii(inertia(i));
+        m += m_[i];
+        P += m_[i]*v_[i];
+        LG += (s ^ (m_[i]*v_[i])) + (Ii & w_[i]);
+        IG += Ii + m_[i]*((s & s)*tensor::I - s*s);
+    }
+    const quaternion q(q_[N/2]);
+    const tensor RT(q.R().T());
+    const quaternion qc(conjugate(q));
+    vectorList& s0 = s0Back_;
+    List<quaternion>& Q = QBack_;
+    s0.setSize(N);
+    Q.setSize(N);
+    for (label i = 0; i < N; ++i)
+    {
+        s0[i] = RT & (r_[i] - xG);
+        Q[i] = normalize(qc*q_[i]);
+    }
+    f.setFlexibleState
+    (
+        xG, q, P/m, inv(IG) & LG, s0, Q, v_, w_, h
+    );
 }
 
 

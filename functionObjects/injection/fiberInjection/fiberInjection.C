@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberInjection.H"
+#include "flexibleChain.H"
 #include "periodicImages.H"
 #include "Switch.H"
 #include "keywordCheck.H"
@@ -102,8 +103,16 @@ wordList knownKeys(const dictionary& setDict, const word& setType)
 {
     wordList known
     ({
-        "type", "nSegments", "segmentLength", "diameter", "density", "seed"
+        "type", "nSegments", "segmentLength", "diameter", "density", "seed",
+        "model", "curvature"
     });
+    if (setDict.getOrDefault<word>("model", "rigid") == "flexible")
+    {
+        known.append
+        (
+            wordList({"youngsModulus", "poissonRatio", "shearModulus"})
+        );
+    }
     if (setType != "patch")
     {
         known.append("fixed");
@@ -687,6 +696,65 @@ Foam::boolList Foam::fiberInjection::fixedSets(const dictionary& dict)
         }
     }
     return boolList(std::move(fixed));
+}
+
+
+Foam::scalarList Foam::fiberInjection::curvatures(const dictionary& dict)
+{
+    DynamicList<scalar> kappa;
+    for (const entry& e : dict)
+    {
+        if (!e.isDict())
+        {
+            continue;
+        }
+        const dictionary& d = e.dict();
+        const scalar k = d.getOrDefault<scalar>("curvature", 0);
+        if (!(k >= 0))
+        {
+            FatalIOErrorInFunction(d)
+                << "curvature " << k << " of fiber set " << e.keyword()
+                << " must be >= 0" << exit(FatalIOError);
+        }
+        kappa.append(k);
+    }
+    return scalarList(std::move(kappa));
+}
+
+
+void Foam::fiberInjection::flexibleSets
+(
+    const dictionary& dict,
+    scalarList& E,
+    scalarList& G
+)
+{
+    DynamicList<scalar> Es, Gs;
+    for (const entry& e : dict)
+    {
+        if (!e.isDict())
+        {
+            continue;
+        }
+        const dictionary& d = e.dict();
+        const word model(d.getOrDefault<word>("model", "rigid"));
+        scalar Ei = 0, Gi = 0;
+        if (model == "flexible")
+        {
+            flexibleChain::moduli(d, Ei, Gi);
+        }
+        else if (model != "rigid")
+        {
+            FatalIOErrorInFunction(d)
+                << "Unknown model " << model << " of fiber set "
+                << e.keyword() << ": rigid or flexible"
+                << exit(FatalIOError);
+        }
+        Es.append(Ei);
+        Gs.append(Gi);
+    }
+    E.transfer(Es);
+    G.transfer(Gs);
 }
 
 

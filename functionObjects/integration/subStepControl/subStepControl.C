@@ -146,7 +146,7 @@ void Foam::subStepControl::scales
     dudt = 0;
     forAll(s, i)
     {
-        const vector vi(f.velocity() + (f.omega() ^ f.segmentOffset(R, i)));
+        const vector vi(f.segmentVelocity(R, i));
         gammaDot = max(gammaDot, s[i].shearRate());
         speed = max(speed, max(mag(s[i].U), mag(vi)));
         dudt = max(dudt, mag(s[i].G & vi));

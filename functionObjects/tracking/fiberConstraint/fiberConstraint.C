@@ -50,6 +50,17 @@ void Foam::fiberConstraint::constrain(fiber& f) const
     f.translate(cmptMultiply(vector(1, 1, 1) - free_, centre_ - x));
     f.setVelocity(constrain(f.velocity()));
     f.setOmega(cmptMultiply(freeAxes_, f.omega()));
+    if (f.flexible())
+    {
+        for (vector& v : f.segmentVelocities())
+        {
+            v = constrain(v);
+        }
+        for (vector& w : f.segmentOmegas())
+        {
+            w = cmptMultiply(freeAxes_, w);
+        }
+    }
 }
 
 
