@@ -33,7 +33,8 @@ Foam::fiberEventLog::state Foam::fiberEventLog::stateOf(const fiber& f)
 {
     return state
     {
-        f.id(), f.position(), f.orientation(), f.velocity(), f.omega()
+        f.id(), f.position(), f.orientation(), f.velocity(), f.omega(),
+        f.chordRatio()
     };
 }
 
@@ -43,20 +44,22 @@ Foam::List<Foam::fiberEventLog::state> Foam::fiberEventLog::gatherSorted
     const UList<state>& local
 )
 {
-    // Per processor: ids and four vectors (x, p, v, omega) per fiber
+    // Per processor: ids and five vectors (x, p, v, omega, (chord 0 0))
+    // per fiber
     List<labelList> ids(Pstream::nProcs());
     List<vectorList> vals(Pstream::nProcs());
     labelList& myIds = ids[Pstream::myProcNo()];
     vectorList& myVals = vals[Pstream::myProcNo()];
     myIds.setSize(local.size());
-    myVals.setSize(4*local.size());
+    myVals.setSize(5*local.size());
     forAll(local, i)
     {
         myIds[i] = local[i].id;
-        myVals[4*i] = local[i].x;
-        myVals[4*i + 1] = local[i].p;
-        myVals[4*i + 2] = local[i].v;
-        myVals[4*i + 3] = local[i].omega;
+        myVals[5*i] = local[i].x;
+        myVals[5*i + 1] = local[i].p;
+        myVals[5*i + 2] = local[i].v;
+        myVals[5*i + 3] = local[i].omega;
+        myVals[5*i + 4] = vector(local[i].chord, 0, 0);
     }
 
     Pstream::gatherList(ids);
@@ -76,7 +79,8 @@ Foam::List<Foam::fiberEventLog::state> Foam::fiberEventLog::gatherSorted
                 (
                     state
                     {
-                        ids[proci][k], v[4*k], v[4*k+1], v[4*k+2], v[4*k+3]
+                        ids[proci][k], v[5*k], v[5*k+1], v[5*k+2], v[5*k+3],
+                        v[5*k+4].x()
                     }
                 );
                 allIds.append(ids[proci][k]);

@@ -235,6 +235,24 @@ Foam::fiber Foam::fiber::arc
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::vector Foam::fiber::endToEnd() const
+{
+    const label n = l_.size() - 1;
+    return
+        R()
+      & (
+            s0_[n] + 0.5*l_[n]*z0_[n]
+          - s0_[0] + 0.5*l_[0]*z0_[0]
+        );
+}
+
+
+Foam::scalar Foam::fiber::chordRatio() const
+{
+    return mag(endToEnd())/sum(l_);
+}
+
+
 Foam::scalar Foam::fiber::length() const
 {
     scalar ext = 0;

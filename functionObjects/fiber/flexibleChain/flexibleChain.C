@@ -638,6 +638,34 @@ void Foam::flexibleChain::step
         r_[i] += h*V;
         q_[i] = normalize(fiber::rotationQuaternion(h*W)*q_[i]);
     }
+    closeJoints();
+}
+
+
+void Foam::flexibleChain::closeJoints()
+{
+    // The linearised step leaves each joint open by at most
+    // (l/2)(h |W_j|^2 + h |W_j+1|^2)/2: the segments are moved (not
+    // turned) to close them, the centre of mass (or the clamp) held
+    const label N = nSegments();
+    const point xG(clamped_ ? point(Zero) : centreOfMass());
+    if (clamped_)
+    {
+        r_[0] = xClamp_ + 0.5*l_[0]*direction(0);
+    }
+    for (label j = 0; j + 1 < N; ++j)
+    {
+        r_[j + 1] =
+            r_[j] + 0.5*l_[j]*direction(j) + 0.5*l_[j + 1]*direction(j + 1);
+    }
+    if (!clamped_)
+    {
+        const vector shift(xG - centreOfMass());
+        for (point& r : r_)
+        {
+            r += shift;
+        }
+    }
 }
 
 

@@ -805,7 +805,7 @@ void Foam::functionObjects::fiberTracking::writeStates
                 os << tab << v[k];
             }
         }
-        os << nl;
+        os << tab << s.chord << nl;
     }
     os.flush();
 }
@@ -1185,10 +1185,15 @@ void Foam::functionObjects::fiberTracking::createFiles
 
     const string stateColumns
     (
-        "Time id cx cy cz px py pz vx vy vz wx wy wz"
+        "Time id cx cy cz px py pz vx vy vz wx wy wz chord"
     );
     stateFilePtr_ = createFile("fiberState");
-    writeHeader(stateFilePtr_(), "Rigid fiber state (fiberTracking)");
+    writeHeader
+    (
+        stateFilePtr_(),
+        "Fiber state (fiberTracking; p: end-to-end direction, chord:"
+        " end-to-end distance/contour length)"
+    );
     writeCommented(stateFilePtr_(), stateColumns);
     stateFilePtr_() << endl;
 
