@@ -157,6 +157,7 @@ Foam::fiberCloud::fiberCloud
     setG_(),
     setKappa_(),
     flexWork_(),
+    motion0_(),
     images_(),
     tEnd_(0),
     dt_(0),

@@ -305,7 +305,8 @@ void Foam::fiberCloud::finish
 {
     fiber& f = fibers_[fi];
     const point x0(f.position());
-    const fiber::motion m0(f.saveMotion());
+    fiber::motion& m0 = motion0_;
+    f.saveMotion(m0);
 
     // Gravity, less buoyancy if asked for (segments of one density)
     const vector g

@@ -116,6 +116,115 @@ void solveBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
 }
 
 
+//- solveBlock for a block with its joint's constraint rows: rows 0-2
+//  read -V + C_ll lambda + C_lW W = b_l (U's rows 0-2 are zero), so V is
+//  eliminated first and a 6x6 system in [lambda, W] is left (rows 3-8)
+void solveJointBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
+{
+    static const label cols[6] = {0, 1, 2, 6, 7, 8};
+    const label nc = withU ? 6 : 0;
+
+    // V = C lambda,W - b_l: into rows 3-8
+    for (label r = 3; r < 9; ++r)
+    {
+        for (label v = 0; v < 3; ++v)
+        {
+            const double a = D(r, 3 + v);
+            if (a == 0)
+            {
+                continue;
+            }
+            for (const label c : cols)
+            {
+                D(r, c) += a*D(v, c);
+            }
+            b(r) += a*b(v);
+        }
+    }
+
+    // Gaussian elimination with partial pivoting of rows 3-8 over the
+    // unknowns cols
+    for (label k = 0; k < 6; ++k)
+    {
+        const label ck = cols[k];
+        label p = 3 + k;
+        for (label r = 4 + k; r < 9; ++r)
+        {
+            if (std::abs(D(r, ck)) > std::abs(D(p, ck)))
+            {
+                p = r;
+            }
+        }
+        if (p != 3 + k)
+        {
+            D.row(3 + k).swap(D.row(p));
+            U.row(3 + k).swap(U.row(p));
+            std::swap(b(3 + k), b(p));
+        }
+        const double inv = 1/D(3 + k, ck);
+        for (label r = 4 + k; r < 9; ++r)
+        {
+            const double f = D(r, ck)*inv;
+            if (f == 0)
+            {
+                continue;
+            }
+            for (label j = k + 1; j < 6; ++j)
+            {
+                D(r, cols[j]) -= f*D(3 + k, cols[j]);
+            }
+            for (label j = 0; j < nc; ++j)
+            {
+                U(r, cols[j]) -= f*U(3 + k, cols[j]);
+            }
+            b(r) -= f*b(3 + k);
+        }
+    }
+
+    // Back substitution: the solution of unknown cols[k] in row 3 + k
+    double xs[6][7];
+    for (label k = 5; k >= 0; --k)
+    {
+        const double inv = 1/D(3 + k, cols[k]);
+        for (label j = 0; j <= nc; ++j)
+        {
+            double v = j < nc ? U(3 + k, cols[j]) : b(3 + k);
+            for (label m = k + 1; m < 6; ++m)
+            {
+                v -= D(3 + k, cols[m])*xs[m][j];
+            }
+            xs[k][j] = v*inv;
+        }
+    }
+
+    // V from the constraint rows; the solution into U and b
+    double xv[3][7];
+    for (label v = 0; v < 3; ++v)
+    {
+        for (label j = 0; j <= nc; ++j)
+        {
+            double s = j < nc ? 0 : -b(v);
+            for (label m = 0; m < 6; ++m)
+            {
+                s += D(v, cols[m])*xs[m][j];
+            }
+            xv[v][j] = s;
+        }
+    }
+    for (label j = 0; j <= nc; ++j)
+    {
+        for (label m = 0; m < 6; ++m)
+        {
+            (j < nc ? U(cols[m], cols[j]) : b(cols[m])) = xs[m][j];
+        }
+        for (label v = 0; v < 3; ++v)
+        {
+            (j < nc ? U(3 + v, cols[j]) : b(3 + v)) = xv[v][j];
+        }
+    }
+}
+
+
 //- D -= L X and b -= L y, with L's non-zero rows (lambda, W) and columns
 //  (V, W) and X's non-zero columns (lambda, W)
 void subtractProduct
@@ -352,18 +461,20 @@ void Foam::flexibleChain::joint
 (
     const quaternion& qa,
     const quaternion& qb,
+    const vector& za,
+    const vector& zb,
     const scalar kb,
     const scalar kt,
-    const vector& t0,
     tensor& K,
     vector& theta
 )
 {
-    const vector thetaBody(fiber::rotationVectorOf(conjugate(qa)*qb));
-    const tensor Ra(qa.R());
-    theta = Ra & thetaBody;
-    const tensor Rmid((qa*fiber::rotationQuaternion(0.5*thetaBody)).R());
-    const vector t(Rmid & t0);
+    theta = qa.transform(fiber::rotationVectorOf(conjugate(qa)*qb));
+
+    // The joint's tangent: the bisector of the two directions
+    vector t(za + zb);
+    const scalar mt = mag(t);
+    t = mt > 1e-12 ? t/mt : za;
     const tensor tt(t*t);
     K = kb*(tensor::I - tt) + kt*tt;
 }
@@ -444,14 +555,12 @@ void Foam::flexibleChain::geometry(const fiber& f)
     const label nJ = max(N - 1, label(0));
     kb_.setSize(nJ);
     kt_.setSize(nJ);
-    t0_.setSize(nJ);
     for (label j = 0; j < nJ; ++j)
     {
         const scalar lj = 0.5*(l_[j] + l_[j + 1]);
         const scalar d4 = pow4(min(d_[j], d_[j + 1]));
         kb_[j] = E_*constant::mathematical::pi*d4/64/lj;
         kt_[j] = G_*constant::mathematical::pi*d4/32/lj;
-        t0_[j] = normalised(z0_[j] + z0_[j + 1]);
     }
 }
 
@@ -514,7 +623,8 @@ void Foam::flexibleChain::assembleSegment
 {
     Matrix9& Di = B.D[i];
     Vector9& bi = B.b[i];
-    const tensor I(inertia(i));
+    const tensor zz(z_[i]*z_[i]);
+    const tensor I(Iax_[i]*zz + Ip_[i]*(tensor::I - zz));
 
     // Linear momentum
     addTo(Di, iV, iV, (m_[i]/h)*tensor::I + ld.A);
@@ -546,7 +656,7 @@ void Foam::flexibleChain::assembleJoint
     // constraint row, and its elastic moment, implicit
     Matrix9& Di = B.D[i];
     Vector9& bi = B.b[i];
-    const vector cm(-0.5*l_[i]*direction(i));
+    const vector cm(-0.5*l_[i]*z_[i]);
     addTo(Di, iV, iL, -tensor::I);
     addTo(Di, iW, iL, -crossOf(cm));
     addTo(Di, iL, iV, -tensor::I);
@@ -556,9 +666,13 @@ void Foam::flexibleChain::assembleJoint
     vector theta, gap;
     if (i > 0)
     {
-        const vector cp(0.5*l_[i - 1]*direction(i - 1));
+        const vector cp(0.5*l_[i - 1]*z_[i - 1]);
         gap = r_[i - 1] + cp - r_[i] - cm;
-        joint(q_[i - 1], q_[i], kb_[i - 1], kt_[i - 1], t0_[i - 1], K, theta);
+        joint
+        (
+            q_[i - 1], q_[i], z_[i - 1], z_[i], kb_[i - 1], kt_[i - 1], K,
+            theta
+        );
 
         Matrix9& Li = B.L[i];
         addTo(Li, iL, iV, tensor::I);
@@ -578,7 +692,8 @@ void Foam::flexibleChain::assembleJoint
         gap = xClamp_ - r_[0] - cm;
         joint
         (
-            qClamp_, q_[0], clampBending(), clampTwisting(), z0_[0], K, theta
+            qClamp_, q_[0], qClamp_.R() & z0_[0], z_[0], clampBending(),
+            clampTwisting(), K, theta
         );
     }
     addTo(bi, iL, -gap/h);
@@ -595,6 +710,7 @@ void Foam::flexibleChain::step
 {
     // Block i: rows and columns [lambda_{i-1}, V_i, W_i]
     const label N = nSegments();
+    updateDirections();
     if (!work_)
     {
         work_.reset(new blocks());
@@ -620,7 +736,14 @@ void Foam::flexibleChain::step
         {
             subtractProduct(B.L[i], X[i - 1], B.b[i - 1], B.D[i], B.b[i]);
         }
-        solveBlock(B.D[i], X[i], B.b[i], i + 1 < N);
+        if (i > 0 || clamped_)
+        {
+            solveJointBlock(B.D[i], X[i], B.b[i], i + 1 < N);
+        }
+        else
+        {
+            solveBlock(B.D[i], X[i], B.b[i], i + 1 < N);
+        }
     }
     List<Vector9>& x = B.b;
     for (label i = N - 2; i >= 0; --i)
@@ -638,7 +761,18 @@ void Foam::flexibleChain::step
         r_[i] += h*V;
         q_[i] = normalize(fiber::rotationQuaternion(h*W)*q_[i]);
     }
+    updateDirections();
     closeJoints();
+}
+
+
+void Foam::flexibleChain::updateDirections()
+{
+    z_.setSize(q_.size());
+    forAll(q_, i)
+    {
+        z_[i] = q_[i].R() & z0_[i];
+    }
 }
 
 
@@ -651,12 +785,11 @@ void Foam::flexibleChain::closeJoints()
     const point xG(clamped_ ? point(Zero) : centreOfMass());
     if (clamped_)
     {
-        r_[0] = xClamp_ + 0.5*l_[0]*direction(0);
+        r_[0] = xClamp_ + 0.5*l_[0]*z_[0];
     }
     for (label j = 0; j + 1 < N; ++j)
     {
-        r_[j + 1] =
-            r_[j] + 0.5*l_[j]*direction(j) + 0.5*l_[j + 1]*direction(j + 1);
+        r_[j + 1] = r_[j] + 0.5*l_[j]*z_[j] + 0.5*l_[j + 1]*z_[j + 1];
     }
     if (!clamped_)
     {
@@ -748,13 +881,20 @@ Foam::scalar Foam::flexibleChain::elasticEnergy() const
     vector theta;
     for (label j = 0; j + 1 < nSegments(); ++j)
     {
-        joint(q_[j], q_[j + 1], kb_[j], kt_[j], t0_[j], K, theta);
+        joint
+        (
+            q_[j], q_[j + 1], direction(j), direction(j + 1), kb_[j], kt_[j],
+            K, theta
+        );
         e += 0.5*(theta & K & theta);
     }
     if (clamped_)
     {
-        joint(qClamp_, q_[0], clampBending(), clampTwisting(), z0_[0], K,
-            theta);
+        joint
+        (
+            qClamp_, q_[0], qClamp_.R() & z0_[0], direction(0),
+            clampBending(), clampTwisting(), K, theta
+        );
         e += 0.5*(theta & K & theta);
     }
     return e;
