@@ -2137,6 +2137,7 @@ void testFlexibleElastica();
 void testFlexibleVibration();
 void testFlexibleStiffLimit();
 void testFlexibleState();
+void testFlexibleBuckling();
 
 
 int main()
@@ -2169,6 +2170,7 @@ int main()
         testFlexibleVibration();
         testFlexibleStiffLimit();
         testFlexibleState();
+        testFlexibleBuckling();
     }
     catch (const Foam::error& err)
     {
