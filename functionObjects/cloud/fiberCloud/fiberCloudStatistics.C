@@ -241,7 +241,7 @@ Foam::scalarList Foam::fiberCloud::gatherSegments() const
               : {
                     vector(f.position() + r - half),
                     vector(f.position() + r + half),
-                    v, f.velocity(), f.omega(), p
+                    v, f.velocity(), f.segmentOmega(i), p
                 }
             )
             {
