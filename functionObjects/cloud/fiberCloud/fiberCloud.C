@@ -395,13 +395,6 @@ void Foam::fiberCloud::checkFlexible(const dictionary& dict) const
     {
         return;
     }
-    if (integrator_->predicts())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Flexible fiber sets (model flexible) are advanced by"
-            << " implicit Euler: entry 'integrator' must be implicitEuler"
-            << exit(FatalIOError);
-    }
     if (interactions_->active())
     {
         FatalIOErrorInFunction(dict)

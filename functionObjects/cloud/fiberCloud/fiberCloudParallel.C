@@ -101,7 +101,7 @@ void Foam::fiberCloud::round()
         }
         step_[fi].st = status::running;
         fiber& f = fibers_[fi];
-        if (integrator_->predicts())
+        if (integrator_->predicts() && !f.flexible())
         {
             SubList<fluidSample> sf(s2, f.nSegments(), offset[fi]);
             if (dispersion_->active())

@@ -532,7 +532,9 @@ void Foam::fiberCloud::runLocal(const label fi)
         {
             return;
         }
-        if (integrator_->predicts())
+        // A flexible fiber: its own implicit Euler (flexibleChain), at the
+        // current configuration, whatever the rigid fibers' integrator
+        if (integrator_->predicts() && !f.flexible())
         {
             vector dx;
             tensor R;
