@@ -120,6 +120,38 @@ scalar cantileverTip
     return tip;
 }
 
+//- The hydrodynamic loads of chain c (segments of fiber f) in the linear
+//  flow u = G x of viscosity mu
+void linearFlowLoads
+(
+    const fiber& f,
+    const flexibleChain& c,
+    const fiberHydrodynamics& hydro,
+    const tensor& G,
+    const scalar mu,
+    UList<flexibleChain::segmentLoad>& loads
+)
+{
+    forAll(loads, i)
+    {
+        const point& r = c.centres()[i];
+        const fluidSample s((G & r), G, mu);
+        fiberHydrodynamics::segmentLaw k;
+        hydro.law
+        (
+            f, i, c.rotations()[i].R(), s, c.velocities()[i], c.omegas()[i],
+            k
+        );
+        flexibleChain::segmentLoad& ld = loads[i];
+        ld.f = (k.Kuu & s.U) + (k.Kuw & s.Omega()) + k.f0;
+        ld.A = k.Kuu;
+        ld.B = k.Kuw;
+        ld.t = (k.Kwu & s.U) + (k.Kww & s.Omega()) + k.t0;
+        ld.C = k.Kwu;
+        ld.D = k.Kww;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -380,24 +412,7 @@ void testFlexibleStiffLimit()
         const label nSteps = 120000;
         for (label n = 1; n <= nSteps; ++n)
         {
-            forAll(loads, i)
-            {
-                const point& r = c.centres()[i];
-                const fluidSample s((G & r), G, mu);
-                fiberHydrodynamics::segmentLaw k;
-                hydro.law
-                (
-                    f, i, c.rotations()[i].R(), s, c.velocities()[i],
-                    c.omegas()[i], k
-                );
-                flexibleChain::segmentLoad& ld = loads[i];
-                ld.f = (k.Kuu & s.U) + (k.Kuw & s.Omega()) + k.f0;
-                ld.A = k.Kuu;
-                ld.B = k.Kuw;
-                ld.t = (k.Kwu & s.U) + (k.Kww & s.Omega()) + k.t0;
-                ld.C = k.Kwu;
-                ld.D = k.Kww;
-            }
+            linearFlowLoads(f, c, hydro, G, mu, loads);
             c.step(loads, dt);
             (n <= nSteps/10 ? gapEarly : gapLate) =
                 max(n <= nSteps/10 ? gapEarly : gapLate, c.maxGap());
@@ -502,6 +517,8 @@ void testFlexibleState()
 namespace
 {
 
+
+
 //- A straight chain (L = 1 mm, d = 20 um, N segments) in simple shear
 //  (glycerol-like, 200 1/s, no inertial drag), started 5 degrees from the
 //  flow direction in the shear plane with its joints bent by eps (an
@@ -545,24 +562,7 @@ scalar bucklingAmplification(const label N, const scalar E)
     List<flexibleChain::segmentLoad> loads(N);
     auto shear = [&](const flexibleChain& c)
     {
-        forAll(loads, i)
-        {
-            const point& r = c.centres()[i];
-            const fluidSample s((G & r), G, mu);
-            fiberHydrodynamics::segmentLaw k;
-            hydro.law
-            (
-                f, i, c.rotations()[i].R(), s, c.velocities()[i],
-                c.omegas()[i], k
-            );
-            flexibleChain::segmentLoad& ld = loads[i];
-            ld.f = (k.Kuu & s.U) + (k.Kuw & s.Omega()) + k.f0;
-            ld.A = k.Kuu;
-            ld.B = k.Kuw;
-            ld.t = (k.Kwu & s.U) + (k.Kww & s.Omega()) + k.t0;
-            ld.C = k.Kwu;
-            ld.D = k.Kww;
-        }
+        linearFlowLoads(f, c, hydro, G, mu, loads);
     };
     auto angle = [](const flexibleChain& c, const label j)
     {

@@ -423,16 +423,10 @@ void Foam::fiber::setFlexibleState
     const scalar h
 )
 {
-    dxPrev_ = x - x_;
-    dthetaPrev_ = R() & rotationVectorOf(conjugate(q_)*q);
-    vPrev_ = v_;
-    omegaPrev_ = omega_;
-    hPrev_ = h;
-
+    // The frame's motion, recorded as a rigid step; its rotation exact
+    moveBy(x - x_, R() & rotationVectorOf(conjugate(q_)*q), v, omega, h);
     x_ = x;
     q_ = q;
-    v_ = v;
-    omega_ = omega;
     s0_ = s0;
     Q_ = Q;
     vSeg_ = vSeg;

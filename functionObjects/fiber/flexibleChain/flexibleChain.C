@@ -14,6 +14,8 @@ License
 #include "fiberHydrodynamics.H"
 #include "mathematicalConstants.H"
 
+#include "eigenBlocks.H"
+
 #include <Eigen/Dense>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -31,22 +33,14 @@ const label iL = 0, iV = 3, iW = 6;
 
 inline void addTo(Matrix9& M, const label r, const label c, const tensor& T)
 {
-    for (label a = 0; a < 3; ++a)
-    {
-        for (label b = 0; b < 3; ++b)
-        {
-            M(r + a, c + b) += T(a, b);
-        }
-    }
+    eigenBlocks::addTensor(M, r, c, T);
 }
 
 inline void addTo(Vector9& b, const label r, const vector& v)
 {
-    for (label a = 0; a < 3; ++a)
-    {
-        b(r + a) += v[a];
-    }
+    eigenBlocks::addVector(b, r, v);
 }
+
 
 //- Solve D [X y] = [U b] in place (X over U, y over b) by Gaussian
 //  elimination with partial pivoting; U's columns V are zero (and so are
@@ -116,15 +110,14 @@ void solveBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
 }
 
 
-//- solveBlock for a block with its joint's constraint rows: rows 0-2
-//  read -V + C_ll lambda + C_lW W = b_l (U's rows 0-2 are zero), so V is
-//  eliminated first and a 6x6 system in [lambda, W] is left (rows 3-8)
-void solveJointBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
-{
-    static const label cols[6] = {0, 1, 2, 6, 7, 8};
-    const label nc = withU ? 6 : 0;
+// The unknowns of a joint block left after V is eliminated: lambda, W
+const label jointCols[6] = {0, 1, 2, 6, 7, 8};
 
-    // V = C lambda,W - b_l: into rows 3-8
+
+//- Rows 0-2 of a joint block read -V + C_ll lambda + C_lW W = b_l: V
+//  substituted into rows 3-8
+void substituteV(Matrix9& D, Vector9& b)
+{
     for (label r = 3; r < 9; ++r)
     {
         for (label v = 0; v < 3; ++v)
@@ -134,19 +127,23 @@ void solveJointBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
             {
                 continue;
             }
-            for (const label c : cols)
+            for (const label c : jointCols)
             {
                 D(r, c) += a*D(v, c);
             }
             b(r) += a*b(v);
         }
     }
+}
 
-    // Gaussian elimination with partial pivoting of rows 3-8 over the
-    // unknowns cols
+
+//- Forward elimination with partial pivoting of rows 3-8 over jointCols,
+//  applied to the nc right-hand side columns jointCols of U and to b
+void eliminate6(Matrix9& D, Matrix9& U, Vector9& b, const label nc)
+{
     for (label k = 0; k < 6; ++k)
     {
-        const label ck = cols[k];
+        const label ck = jointCols[k];
         label p = 3 + k;
         for (label r = 4 + k; r < 9; ++r)
         {
@@ -171,27 +168,38 @@ void solveJointBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
             }
             for (label j = k + 1; j < 6; ++j)
             {
-                D(r, cols[j]) -= f*D(3 + k, cols[j]);
+                D(r, jointCols[j]) -= f*D(3 + k, jointCols[j]);
             }
             for (label j = 0; j < nc; ++j)
             {
-                U(r, cols[j]) -= f*U(3 + k, cols[j]);
+                U(r, jointCols[j]) -= f*U(3 + k, jointCols[j]);
             }
             b(r) -= f*b(3 + k);
         }
     }
+}
 
-    // Back substitution: the solution of unknown cols[k] in row 3 + k
+
+//- solveBlock for a block with its joint's constraint rows (U's rows 0-2
+//  are zero): V eliminated first, a 6x6 system in [lambda, W] solved, V
+//  recovered from the constraint rows
+void solveJointBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
+{
+    const label nc = withU ? 6 : 0;
+    substituteV(D, b);
+    eliminate6(D, U, b, nc);
+
+    // Back substitution: the solution of unknown jointCols[k] (row 3 + k)
     double xs[6][7];
     for (label k = 5; k >= 0; --k)
     {
-        const double inv = 1/D(3 + k, cols[k]);
+        const double inv = 1/D(3 + k, jointCols[k]);
         for (label j = 0; j <= nc; ++j)
         {
-            double v = j < nc ? U(3 + k, cols[j]) : b(3 + k);
+            double v = j < nc ? U(3 + k, jointCols[j]) : b(3 + k);
             for (label m = k + 1; m < 6; ++m)
             {
-                v -= D(3 + k, cols[m])*xs[m][j];
+                v -= D(3 + k, jointCols[m])*xs[m][j];
             }
             xs[k][j] = v*inv;
         }
@@ -206,7 +214,7 @@ void solveJointBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
             double s = j < nc ? 0 : -b(v);
             for (label m = 0; m < 6; ++m)
             {
-                s += D(v, cols[m])*xs[m][j];
+                s += D(v, jointCols[m])*xs[m][j];
             }
             xv[v][j] = s;
         }
@@ -215,11 +223,12 @@ void solveJointBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
     {
         for (label m = 0; m < 6; ++m)
         {
-            (j < nc ? U(cols[m], cols[j]) : b(cols[m])) = xs[m][j];
+            (j < nc ? U(jointCols[m], jointCols[j]) : b(jointCols[m])) =
+                xs[m][j];
         }
         for (label v = 0; v < 3; ++v)
         {
-            (j < nc ? U(3 + v, cols[j]) : b(3 + v)) = xv[v][j];
+            (j < nc ? U(3 + v, jointCols[j]) : b(3 + v)) = xv[v][j];
         }
     }
 }

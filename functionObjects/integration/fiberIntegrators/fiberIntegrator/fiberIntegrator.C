@@ -12,6 +12,8 @@ License
 
 #include "fiberIntegrator.H"
 
+#include "eigenBlocks.H"
+
 #include <Eigen/Dense>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -41,21 +43,12 @@ inline void addBlock
     const tensor& t
 )
 {
-    for (label i = 0; i < 3; ++i)
-    {
-        for (label j = 0; j < 3; ++j)
-        {
-            M(r + i, c + j) += t(i, j);
-        }
-    }
+    eigenBlocks::addTensor(M, r, c, t);
 }
 
 inline void addBlock(Vector6& b, const label r, const vector& v)
 {
-    for (label i = 0; i < 3; ++i)
-    {
-        b(r + i) += v[i];
-    }
+    eigenBlocks::addVector(b, r, v);
 }
 
 //- Segment i's terms of the 6x6 system; with out, the parts of its force
