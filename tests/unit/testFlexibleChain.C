@@ -521,11 +521,12 @@ namespace
 
 //- A straight chain (L = 1 mm, d = 20 um, N segments) in simple shear
 //  (glycerol-like, 200 1/s, no inertial drag), started 5 degrees from the
-//  flow direction in the shear plane with its joints bent by eps (an
-//  arc in the shear plane) and, a second chain, by -eps, turned through the compressional quadrant to 60 degrees: the
-//  largest half-difference of their joint angles over the passage, over
-//  eps (the growth of the perturbation; the chain's own bending by the
-//  flow, the same in both, drops out)
+//  flow direction in the shear plane with its joints bent by eps (an arc
+//  in the shear plane) and, a second chain, by -eps, turned through the
+//  compressional quadrant to 60 degrees: the largest half-difference of
+//  their joint angles over the passage, over eps (the growth of the
+//  perturbation; the chain's own bending by the flow, the same in both,
+//  drops out)
 scalar bucklingAmplification(const label N, const scalar E)
 {
     const scalar L = 1e-3, d = 2e-5, rho = 1380, mu = 1.6, gammaDot = 200;
