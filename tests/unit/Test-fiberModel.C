@@ -2134,6 +2134,7 @@ void testSegmentDistance()
 // Flexible chains: testFlexibleChain.C
 void testFlexibleCantilever();
 void testFlexibleElastica();
+void testFlexibleTwistAndMoment();
 void testFlexibleVibration();
 void testFlexibleStiffLimit();
 void testFlexibleState();
@@ -2167,6 +2168,7 @@ int main()
         testSegmentDistance();
         testFlexibleCantilever();
         testFlexibleElastica();
+        testFlexibleTwistAndMoment();
         testFlexibleVibration();
         testFlexibleStiffLimit();
         testFlexibleState();

@@ -79,18 +79,23 @@ flexibleChain beam(const label N, const scalar nu = 0.3)
 }
 
 
-//- Static equilibrium of a clamped chain under dead loads: implicit steps
-//  with a light damping until the motion stops; the tip's y
+//- Static equilibrium of a clamped chain under dead loads (a tip force
+//  -tipLoad e_y, a line load -lineLoad e_y, a tip couple M): implicit
+//  steps with a light damping until the motion stops; the tip's y, and
+//  the last segment's rotation vector from its start into rot if given
 scalar cantileverTip
 (
     const label N,
     const scalar tipLoad,
     const scalar lineLoad,
-    label& nSteps
+    label& nSteps,
+    const vector& M = Zero,
+    vector* rot = nullptr
 )
 {
     flexibleChain c(beam(N));
     c.clamp();
+    const quaternion q0(c.rotations()[N - 1]);
     const scalar l = beamL/N;
     List<flexibleChain::segmentLoad> loads(N);
     forAll(loads, i)
@@ -101,23 +106,32 @@ scalar cantileverTip
         loads[i].D = (beamRhoA*pow3(l)*10)*tensor::I;
     }
     const scalar h = 0.05;
-    scalar tip = c.end().y();
+    auto state = [&]()
+    {
+        return
+            c.end().y()
+          + mag(fiber::rotationVectorOf(conjugate(q0)*c.rotations()[N - 1]));
+    };
+    scalar tip = state();
     for (nSteps = 1; nSteps < 200000; ++nSteps)
     {
         // the tip load is dead (fixed direction) at the moving tip
         const vector P(0, -tipLoad, 0);
         loads[N - 1].f = vector(0, -lineLoad*l, 0) + P;
-        loads[N - 1].t = (0.5*l*c.direction(N - 1)) ^ P;
+        loads[N - 1].t = ((0.5*l*c.direction(N - 1)) ^ P) + M;
         c.step(loads, h);
-        const scalar tipNew = c.end().y();
+        const scalar tipNew = state();
         if (mag(tipNew - tip) < 1e-15*mag(tipNew) && nSteps > 10)
         {
-            tip = tipNew;
             break;
         }
         tip = tipNew;
     }
-    return tip;
+    if (rot)
+    {
+        *rot = fiber::rotationVectorOf(conjugate(q0)*c.rotations()[N - 1]);
+    }
+    return c.end().y();
 }
 
 //- The hydrodynamic loads of chain c (segments of fiber f) in the linear
@@ -202,6 +216,54 @@ void testFlexibleCantilever()
         convTip && convLine && errTipPrev < 0.04 && errLinePrev < 0.06,
         det.str()
     );
+}
+
+
+void testFlexibleTwistAndMoment()
+{
+    // A tip couple: every joint (clamp + N - 1) carries it whole, so the
+    // discrete chain is exact for any N and any angle about a fixed axis:
+    // twist about the axis T L/(G J) (G J = EI/(1 + nu) here), bending
+    // about z a tip rotation M L/EI with the tip deflection
+    // M L^2 (N + 1)/(2 N EI) (small) or the arc's (1 - cos(ML/EI))/(M/EI)
+    // discrete: sum over joints of l sin(j M l/EI)
+    const label N = 10;
+    const scalar nu = 0.3;
+    for (const scalar T : {1e-6, 1.0})
+    {
+        label n = 0;
+        vector rot;
+        cantileverTip(N, 0, 0, n, vector(T, 0, 0), &rot);
+        const scalar ref = T*beamL*(1 + nu)/beamEI;
+        std::ostringstream nm;
+        nm << "flexible.cantilever.twist.T=" << T;
+        check
+        (
+            nm.str(),
+            relErr(rot.x(), ref) < 1e-9 && mag(rot.y()) + mag(rot.z()) < 1e-12,
+            fmt(rot.x(), ref, relErr(rot.x(), ref))
+        );
+    }
+    for (const scalar M : {1e-6, 1.0})
+    {
+        label n = 0;
+        vector rot;
+        const scalar v = cantileverTip(N, 0, 0, n, vector(0, 0, M), &rot);
+        const scalar l = beamL/N, a = M*l/beamEI;
+        scalar vRef = 0;
+        for (label j = 1; j <= N; ++j)
+        {
+            vRef += l*std::sin(j*a);
+        }
+        const scalar e =
+            max(relErr(rot.z(), M*beamL/beamEI), relErr(v, vRef));
+        std::ostringstream nm, det;
+        nm << "flexible.cantilever.tipMoment.M=" << M;
+        det << "tip rotation " << rot.z() << " (" << M*beamL/beamEI
+            << "), deflection " << v << " (" << vRef << "), rel. error "
+            << e;
+        check(nm.str(), e < 1e-9, det.str());
+    }
 }
 
 
