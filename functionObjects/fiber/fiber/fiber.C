@@ -396,17 +396,29 @@ void Foam::fiber::makeFlexible(const scalar E, const scalar G)
 }
 
 
-void Foam::fiber::restoreShape(const motion& m)
+void Foam::fiber::setShape
+(
+    const vectorList& s0,
+    const List<quaternion>& Q,
+    const vectorList& vSeg,
+    const vectorList& wSeg
+)
 {
-    s0_ = m.s0;
-    Q_ = m.Q;
-    vSeg_ = m.vSeg;
-    wSeg_ = m.wSeg;
+    s0_ = s0;
+    Q_ = Q;
+    vSeg_ = vSeg;
+    wSeg_ = wSeg;
     forAll(z0_, i)
     {
         z0_[i] = Q_[i].R() & z0Rest_[i];
     }
     calcInertia();
+}
+
+
+void Foam::fiber::restoreShape(const motion& m)
+{
+    setShape(m.s0, m.Q, m.vSeg, m.wSeg);
 }
 
 
@@ -427,15 +439,7 @@ void Foam::fiber::setFlexibleState
     moveBy(x - x_, R() & rotationVectorOf(conjugate(q_)*q), v, omega, h);
     x_ = x;
     q_ = q;
-    s0_ = s0;
-    Q_ = Q;
-    vSeg_ = vSeg;
-    wSeg_ = wSeg;
-    forAll(z0_, i)
-    {
-        z0_[i] = Q_[i].R() & z0Rest_[i];
-    }
-    calcInertia();
+    setShape(s0, Q, vSeg, wSeg);
 }
 
 
