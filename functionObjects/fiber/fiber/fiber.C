@@ -380,19 +380,20 @@ void Foam::fiber::transform(const vectorTensorTransform& T)
 
 void Foam::fiber::makeFlexible(const scalar E, const scalar G)
 {
-    E_ = E;
-    G_ = G;
-    z0Rest_ = z0_;
-    Q_.setSize(l_.size());
-    Q_ = quaternion::I;
+    // The segments' velocities of the rigid motion, while still rigid
     vSeg_.setSize(l_.size());
     wSeg_.setSize(l_.size());
     const tensor R(this->R());
     forAll(l_, i)
     {
-        vSeg_[i] = v_ + (omega_ ^ (R & s0_[i]));
+        vSeg_[i] = segmentVelocity(R, i);
         wSeg_[i] = omega_;
     }
+    E_ = E;
+    G_ = G;
+    z0Rest_ = z0_;
+    Q_.setSize(l_.size());
+    Q_ = quaternion::I;
 }
 
 

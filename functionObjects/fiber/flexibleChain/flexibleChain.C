@@ -266,6 +266,17 @@ void subtractProduct
 }
 
 
+//- Joint stiffnesses of Euler-Bernoulli: bending E I/l, twisting G J/l
+inline scalar kBending(const scalar E, const scalar d4, const scalar l)
+{
+    return E*constant::mathematical::pi*d4/64/l;
+}
+
+inline scalar kTwisting(const scalar G, const scalar d4, const scalar l)
+{
+    return G*constant::mathematical::pi*d4/32/l;
+}
+
 inline tensor crossOf(const vector& c)
 {
     return fiberHydrodynamics::crossMatrix(c);
@@ -326,16 +337,7 @@ Foam::flexibleChain::flexibleChain
 {
     checkConnected(f);
     geometry(f);
-    const tensor R(f.R());
-    const quaternion q(R);
-    forAll(l_, i)
-    {
-        const vector s(R & f.bodyOffset(i));
-        r_[i] = f.position() + s;
-        q_[i] = q;
-        v_[i] = f.velocity() + (f.omega() ^ s);
-        w_[i] = f.omega();
-    }
+    stateFrom(f);
 }
 
 
@@ -523,12 +525,20 @@ void Foam::flexibleChain::assign(const fiber& f)
     G_ = f.shearModulus();
     clamped_ = false;
     geometry(f);
+    stateFrom(f);
+}
+
+
+void Foam::flexibleChain::stateFrom(const fiber& f)
+{
+    // A rigid fiber's segments all turn with its frame
     const tensor R(f.R());
     const quaternion q(R);
+    const bool flex = f.flexible();
     forAll(l_, i)
     {
         r_[i] = f.position() + (R & f.bodyOffset(i));
-        q_[i] = normalize(q*f.segmentRotation(i));
+        q_[i] = flex ? normalize(q*f.segmentRotation(i)) : q;
         v_[i] = f.segmentVelocity(R, i);
         w_[i] = f.segmentOmega(i);
     }
@@ -568,8 +578,8 @@ void Foam::flexibleChain::geometry(const fiber& f)
     {
         const scalar lj = 0.5*(l_[j] + l_[j + 1]);
         const scalar d4 = pow4(min(d_[j], d_[j + 1]));
-        kb_[j] = E_*constant::mathematical::pi*d4/64/lj;
-        kt_[j] = G_*constant::mathematical::pi*d4/32/lj;
+        kb_[j] = kBending(E_, d4, lj);
+        kt_[j] = kTwisting(G_, d4, lj);
     }
 }
 
@@ -578,21 +588,30 @@ void Foam::flexibleChain::geometry(const fiber& f)
 
 Foam::scalar Foam::flexibleChain::clampBending() const
 {
-    return E_*constant::mathematical::pi*pow4(d_[0])/64/l_[0];
+    return kBending(E_, pow4(d_[0]), l_[0]);
 }
 
 
 Foam::scalar Foam::flexibleChain::clampTwisting() const
 {
-    return G_*constant::mathematical::pi*pow4(d_[0])/32/l_[0];
+    return kTwisting(G_, pow4(d_[0]), l_[0]);
+}
+
+
+Foam::tensor Foam::flexibleChain::inertia
+(
+    const label i,
+    const vector& z
+) const
+{
+    const tensor zz(z*z);
+    return Iax_[i]*zz + Ip_[i]*(tensor::I - zz);
 }
 
 
 Foam::tensor Foam::flexibleChain::inertia(const label i) const
 {
-    const vector z(direction(i));
-    const tensor zz(z*z);
-    return Iax_[i]*zz + Ip_[i]*(tensor::I - zz);
+    return inertia(i, direction(i));
 }
 
 
@@ -632,8 +651,7 @@ void Foam::flexibleChain::assembleSegment
 {
     Matrix9& Di = B.D[i];
     Vector9& bi = B.b[i];
-    const tensor zz(z_[i]*z_[i]);
-    const tensor I(Iax_[i]*zz + Ip_[i]*(tensor::I - zz));
+    const tensor I(inertia(i, z_[i]));
 
     // Linear momentum
     addTo(Di, iV, iV, (m_[i]/h)*tensor::I + ld.A);
