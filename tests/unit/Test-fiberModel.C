@@ -2138,6 +2138,7 @@ void testFlexibleTwistAndMoment();
 void testFlexibleVibration();
 void testFlexibleStiffLimit();
 void testFlexibleState();
+void testFlexibleSegmentLoads();
 void testFlexibleBuckling();
 
 
@@ -2172,6 +2173,7 @@ int main()
         testFlexibleVibration();
         testFlexibleStiffLimit();
         testFlexibleState();
+        testFlexibleSegmentLoads();
         testFlexibleBuckling();
     }
     catch (const Foam::error& err)

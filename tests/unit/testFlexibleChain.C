@@ -574,6 +574,111 @@ void testFlexibleState()
 }
 
 
+// * * * * * * * * * * * * Loads of the interactions  * * * * * * * * * * //
+
+void testFlexibleSegmentLoads()
+{
+    // The interactions' explicit loads by segment (contacts): a pair of
+    // opposite forces across the tips of a flexible fiber at rest in a
+    // fluid without viscosity (a couple, as a self-contact gives): after
+    // one step h the chain's momentum is zero and its angular momentum
+    // about the origin h sum c x F, to O(h^3) (the segments' inertia
+    // turns within the step: the relative error falls as h^2); the load
+    // turns and moves with a periodic transform and streams unchanged; a
+    // rigid fiber's load has no segment loads
+    const label N = 5;
+    auto straight = [&]()
+    {
+        fiber f
+        (
+            fiber::straight
+            (
+                3, point(1, 2, 3), vector(1, 0, 0), N, 2e-4, 2e-5, 1e3
+            )
+        );
+        f.makeFlexible(1e9, 4e8);
+        return f;
+    };
+    fiber f(straight());
+    const tensor R(f.R());
+    const point c0(f.position() + f.segmentOffset(R, 0));
+    const point c4(f.position() + f.segmentOffset(R, N - 1));
+    const vector F(0, 1e-6, 2e-7);
+    fiberIntegrator::load l;
+    l.addForce(f, 0, F, c0 + vector(0, 1e-5, 0));
+    l.addForce(f, N - 1, -F, c4 + vector(0, -1e-5, 0));
+    const vector M(l.M);
+
+    const fiberHydrodynamics hydro(1000, false, 1);
+    const List<fluidSample> s(N, fluidSample(Zero, Zero, 0));
+    FixedList<scalar, 2> eP, eL;
+    const FixedList<scalar, 2> h({1e-8, 1e-9});
+    scalar turn = 0;
+    for (label k = 0; k < 2; ++k)
+    {
+        fiber g(straight());
+        flexibleChain work;
+        work.advance(g, s, hydro, Zero, h[k], nullptr, &l);
+        const flexibleChain c(g);
+        eP[k] = mag(c.momentum())/(mag(F)*h[k]);
+        eL[k] = mag(c.angularMomentum() - h[k]*M)/mag(h[k]*M);
+        turn = mag(c.direction(0) - c.direction(N - 1));
+    }
+    std::ostringstream det;
+    det << "momentum " << max(eP[0], eP[1]) << " of h |F|, angular "
+        << "momentum against h sum c x F: relative difference " << eL[0]
+        << " (h = " << h[0] << " s), " << eL[1] << " (h = " << h[1]
+        << " s); tips turned apart by " << turn;
+    check
+    (
+        "flexible.segmentLoads.applied",
+        l.Fs.size() == N && mag(l.F) == 0 && max(eP[0], eP[1]) < 1e-12
+     && eL[1] < 1e-9 && eL[0] > 30*eL[1] && turn > 0,
+        det.str()
+    );
+
+    // Transformed: c' = Q c + t, F' = Q F, M' = c' x F'
+    const tensor Q(fiber::rotationQuaternion(vector(0.3, -0.2, 1)).R());
+    const vector t(0.5, -1, 2);
+    fiberIntegrator::load lt(l);
+    lt.transform(vectorTensorTransform(t, Q, true));
+    const point c0t((Q & (c0 + vector(0, 1e-5, 0))) + t);
+    const scalar eT =
+        mag(lt.Fs[0] - (Q & F)) + mag(lt.Ms[0] - (c0t ^ (Q & F)))
+      + mag(lt.Fs[1]) + mag(lt.Ms[1]);
+
+    OStringStream os;
+    os.precision(17);
+    os << lt;
+    IStringStream is(os.str());
+    fiberIntegrator::load lr;
+    is >> lr;
+    scalar eS = 0;
+    forAll(lr.Fs, i)
+    {
+        eS += mag(lr.Fs[i] - lt.Fs[i]) + mag(lr.Ms[i] - lt.Ms[i]);
+    }
+
+    fiber r
+    (
+        fiber::straight(4, Zero, vector(0, 1, 0), N, 2e-4, 2e-5, 1e3)
+    );
+    fiberIntegrator::load lrigid;
+    lrigid.addForce(r, 2, F, point(0, 1e-4, 0));
+    std::ostringstream det2;
+    det2 << "transformed " << eT << ", streamed " << eS << " ("
+         << lr.Fs.size() << " segments), rigid fiber: "
+         << lrigid.Fs.size() << " segment loads";
+    check
+    (
+        "flexible.segmentLoads.transformAndStream",
+        eT < 1e-15*mag(F)*(1 + mag(t) + mag(c0)) && lr.Fs.size() == N
+     && eS < 1e-20 && lrigid.Fs.empty() && mag(lrigid.F - F) == 0,
+        det2.str()
+    );
+}
+
+
 // * * * * * * * * * * * * * * Buckling in shear  * * * * * * * * * * * * * //
 
 namespace

@@ -338,6 +338,19 @@ void Foam::fiberCloud::bend(fiber& f) const
     {
         return;
     }
+    scalar L = 0;
+    for (label i = 0; i < f.nSegments(); ++i)
+    {
+        L += f.segmentLength(i);
+    }
+    if (kappa*L > constant::mathematical::twoPi*(1 + 1e-12))
+    {
+        // A list entry's own size, longer than its set's
+        FatalErrorInFunction
+            << "Fiber " << f.id() << " of " << L << " m with the curvature "
+            << kappa << " of its set: more than a full turn (2 pi), the arc"
+            << " would overlap itself" << exit(FatalError);
+    }
     const vector p(f.orientation());
     vector n;
     if (constraint_.active())
@@ -395,12 +408,14 @@ void Foam::fiberCloud::checkFlexible(const dictionary& dict) const
     {
         return;
     }
-    if (interactions_->active())
+    if (!interactions_->actsOnFlexible())
     {
-        FatalIOErrorInFunction(dict)
-            << "Flexible fiber sets (model flexible) with 'interactions' "
-            << interactions_->type() << ": not supported yet (contacts act"
-            << " on rigid fibers)" << exit(FatalIOError);
+        FatalIOErrorInFunction(dict.subDict("interactions"))
+            << "Entry 'implicit on' of 'interactions' ("
+            << interactions_->type() << ") with flexible fiber sets (model "
+            << "flexible): implicit contacts act on a fiber's rigid motion;"
+            << " flexible fibers take explicit contacts (implicit off)"
+            << exit(FatalIOError);
     }
 }
 

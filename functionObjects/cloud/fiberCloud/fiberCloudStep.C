@@ -317,7 +317,8 @@ void Foam::fiberCloud::finish
     {
         flexWork_.advance
         (
-            f, s, hydro_, g, h, coupling_.valid() ? &forces_ : nullptr
+            f, s, hydro_, g, h, coupling_.valid() ? &forces_ : nullptr,
+            interactions_->active() ? &step_[fi].load : nullptr
         );
     }
     else

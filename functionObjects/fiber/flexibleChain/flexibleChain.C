@@ -420,10 +420,18 @@ void Foam::flexibleChain::advance
     const fiberHydrodynamics& hydro,
     const vector& g,
     const scalar h,
-    fiberIntegrator::segmentForces* forces
+    fiberIntegrator::segmentForces* forces,
+    const fiberIntegrator::load* ext
 )
 {
     const label N = f.nSegments();
+    if (ext && ext->implicit)
+    {
+        FatalErrorInFunction
+            << "Implicit interaction loads act on rigid fibers; fiber "
+            << f.id() << " is flexible" << exit(FatalError);
+    }
+    const bool segLoads = ext && ext->Fs.size() == N;
     const tensor R(f.R());
     List<segmentLoad>& loads = loads_;
     loads.setSize(N);
@@ -449,6 +457,14 @@ void Foam::flexibleChain::advance
             Fh[i] = ld.f;
         }
         ld.f += f.segmentMass(i)*g;
+        if (segLoads)
+        {
+            // The interactions' force and its moment about the segment's
+            // centre
+            const point c(f.position() + f.segmentOffset(R, i));
+            ld.f += ext->Fs[i];
+            ld.t += ext->Ms[i] - (c ^ ext->Fs[i]);
+        }
     }
 
     assign(f);

@@ -716,6 +716,21 @@ Foam::scalarList Foam::fiberInjection::curvatures(const dictionary& dict)
                 << "curvature " << k << " of fiber set " << e.keyword()
                 << " must be >= 0" << exit(FatalIOError);
         }
+        if (k > 0)
+        {
+            // An arc of more than a full turn overlaps itself
+            const scalar L = fiberSizes(d).maxFiberLength();
+            if (k*L > constant::mathematical::twoPi*(1 + 1e-12))
+            {
+                FatalIOErrorInFunction(d)
+                    << "curvature " << k << " of fiber set " << e.keyword()
+                    << " bends its longest fibers (" << L << " m) by "
+                    << k*L << " rad, more than a full turn (2 pi): the arc"
+                    << " would overlap itself; curvature must be <= "
+                    << constant::mathematical::twoPi/L
+                    << exit(FatalIOError);
+            }
+        }
         kappa.append(k);
     }
     return scalarList(std::move(kappa));

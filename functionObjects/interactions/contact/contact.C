@@ -39,15 +39,16 @@ namespace
 
 using namespace Foam;
 
-//- A pair's load on this side's fiber (explicit force, lever of the
-//  contact point, implicit spring, dashpot and predicted velocity), with
-//  the pair's key (this side's fiber and segment, the other's) for a fixed
-//  order
+//- A pair's load on this side's fiber (explicit force, the contact point
+//  and its lever from the fiber's centre, implicit spring, dashpot and
+//  predicted velocity), with the pair's key (this side's fiber and
+//  segment, the other's) for a fixed order
 struct contribution
 {
     fiberInteractions::contact::pairKey key;
     label local;
     vector F;
+    point c;
     vector r;
     tensor K;
     tensor C;
@@ -77,11 +78,9 @@ void applyLoads
     for (const contribution& cp : parts)
     {
         // The explicit force with the dashpot's part C vp, at the contact
-        // point
+        // point (of a flexible fiber: on its segment)
         fiberIntegrator::load& l = loads[cp.local];
-        const vector F(cp.F + (cp.C & cp.vp));
-        l.F += F;
-        l.M += (fibers[cp.local].position() + cp.r) ^ F;
+        l.addForce(fibers[cp.local], cp.key[1], cp.F + (cp.C & cp.vp), cp.c);
         if (magSqr(cp.K) > 0)
         {
             l.addImplicit(cp.K, cp.C, cp.r, cp.vp);
@@ -345,19 +344,19 @@ bool Foam::fiberInteractions::contact::ownsContact
     const vector& d
 )
 {
-    // The segments of a fiber lie on one straight axis: a closest point at
-    // a joint belongs to the segment on the side where the axis comes
-    // closer (d from the other's closest point), the one after the joint
-    // if neither does; one at a free end or inside, to this one
+    // A closest point at a joint belongs to the segment on the side where
+    // the axis comes closer (d from the other's closest point), to the one
+    // after the joint if neither does (the partner beyond the joint on
+    // both segments' axes: beside a straight chain, or outside the bend of
+    // a bent one); one at a free end or inside, to this one
     const scalar tol = 1e-9*mag(d);
-    const scalar du = d & (A.b - A.a)/max(mag(A.b - A.a), VSMALL);
     if (s >= 1 && A.seg < A.nSeg - 1)
     {
-        return du > tol;
+        return (d & (A.b - A.a)/max(mag(A.b - A.a), VSMALL)) > tol;
     }
     if (s <= 0 && A.seg > 0)
     {
-        return du <= tol;
+        return (d & A.zPrev) <= tol;
     }
     return true;
 }
@@ -548,11 +547,16 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
         return tLeft;
     }
 
-    // The lightest segment's contact time
+    // The contact time of the lightest fiber, or of a flexible fiber's
+    // lightest segment (the body a contact strikes)
     scalar mMin = GREAT;
     for (const fiber& f : fibers)
     {
         mMin = min(mMin, f.mass());
+        for (label i = 0; f.flexible() && i < f.nSegments(); ++i)
+        {
+            mMin = min(mMin, f.segmentMass(i));
+        }
     }
     reduce(mMin, minOp<scalar>());
     const scalar tc = mMin < GREAT ? contactTime(mMin/8) : GREAT;
@@ -675,13 +679,14 @@ void Foam::fiberInteractions::contact::interact
         const segment& P = segs[ij[1]];
 
         // The pair from this side, always in one order: the lower fiber
-        // id first
-        const bool qFirst = Q.fiber < P.fiber;
+        // id first (of one fiber: the lower segment)
+        const bool self = Q.fiber == P.fiber;
+        const bool qFirst = Q.fiber < P.fiber || (self && Q.seg < P.seg);
         const pairKey k{Q.fiber, Q.seg, P.fiber, P.seg};
         pairLoad pl;
         const bool acts =
             pairForce(qFirst ? Q : P, qFirst ? P : Q, k, h, next, pl);
-        if (pl.close)
+        if (pl.close && !self)
         {
             close.append(FixedList<label, 2>{Q.fiber, P.fiber});
         }
@@ -689,13 +694,19 @@ void Foam::fiberInteractions::contact::interact
         {
             continue;
         }
-        touching.append(FixedList<label, 2>{Q.fiber, P.fiber});
+        if (!self)
+        {
+            touching.append(FixedList<label, 2>{Q.fiber, P.fiber});
+        }
         if (Q.m > 0)
         {
             const vector FQ(qFirst ? pl.F : -pl.F);
             parts.append
             (
-                contribution{k, Q.local, FQ, pl.c - Q.x, pl.K, pl.C, pl.vp}
+                contribution
+                {
+                    k, Q.local, FQ, pl.c, pl.c - Q.x, pl.K, pl.C, pl.vp
+                }
             );
             if (implicit_ && magSqr(pl.K) > 0)
             {

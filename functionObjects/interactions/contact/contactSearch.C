@@ -19,6 +19,7 @@ Description
 #include "periodicImages.H"
 #include "PstreamBuffers.H"
 #include "segmentDistance.H"
+#include "mathematicalConstants.H"
 
 #include <unordered_map>
 #include <vector>
@@ -36,7 +37,9 @@ void writeSegment(Ostream& os, const segment& s)
 {
     os  << s.fiber << token::SPACE << s.seg << token::SPACE << s.nSeg
         << token::SPACE << s.a
-        << token::SPACE << s.b << token::SPACE << s.d << token::SPACE << s.x
+        << token::SPACE << s.b << token::SPACE << s.d
+        << token::SPACE << s.zPrev << token::SPACE << s.s0
+        << token::SPACE << s.flexible << token::SPACE << s.x
         << token::SPACE << s.v << token::SPACE << s.w << token::SPACE << s.m
         << token::SPACE << s.sX << token::SPACE << s.sTheta
         << token::SPACE << s.sV << token::SPACE << s.sW
@@ -47,7 +50,8 @@ void writeSegment(Ostream& os, const segment& s)
 
 void readSegment(Istream& is, segment& s)
 {
-    is  >> s.fiber >> s.seg >> s.nSeg >> s.a >> s.b >> s.d >> s.x >> s.v
+    is  >> s.fiber >> s.seg >> s.nSeg >> s.a >> s.b >> s.d >> s.zPrev
+        >> s.s0 >> s.flexible >> s.x >> s.v
         >> s.w >> s.m >> s.sX >> s.sTheta >> s.sV >> s.sW >> s.sTau >> s.H
         >> s.dX >> s.dTheta;
     s.local = -1;
@@ -64,6 +68,7 @@ segment image(const segment& s, const vectorTensorTransform& T)
     if (T.hasR())
     {
         const tensor& R = T.R();
+        i.zPrev = R & s.zPrev;
         i.v = R & s.v;
         i.w = R & s.w;
         i.sX = R & s.sX;
@@ -75,6 +80,26 @@ segment image(const segment& s, const vectorTensorTransform& T)
     }
     i.local = -1;
     return i;
+}
+
+
+//- Whether two segments of one fiber may touch: of a flexible fiber,
+//  both of this processor (not images), and apart along the contour by at
+//  least pi/2 diameters: a smooth U-turn of that contour keeps its arms a
+//  diameter apart, so that a contact is a fold, not the bending (adjacent
+//  segments never touch)
+bool selfPair(const segment& Q, const segment& P)
+{
+    if (!Q.flexible || Q.local < 0 || P.local < 0)
+    {
+        return false;
+    }
+    const segment& A = Q.seg < P.seg ? Q : P;
+    const segment& B = Q.seg < P.seg ? P : Q;
+    return
+        B.seg > A.seg + 1
+     && B.s0 - A.s0 - mag(A.b - A.a)
+     >= 0.5*constant::mathematical::pi*max(A.d, B.d);
 }
 
 
@@ -203,24 +228,30 @@ void Foam::fiberInteractions::contact::localSegments
         const fiber& f = fibers[fi];
         const fiberIntegrator::load& l = loads ? (*loads)[fi] : none;
         const tensor R(f.R());
+        const bool flex = f.flexible();
+        vector zPrev(f.segmentDirection(R, 0));
+        scalar s0 = 0;
         for (label i = 0; i < f.nSegments(); ++i)
         {
+            // A flexible fiber's segment moves as a body of its own
             const point c(f.position() + f.segmentOffset(R, i));
-            const vector half
-            (
-                (0.5*f.segmentLength(i))*f.segmentDirection(R, i)
-            );
+            const vector z(f.segmentDirection(R, i));
+            const vector half((0.5*f.segmentLength(i))*z);
             segs.append
             (
                 segment
                 {
                     f.id(), i, f.nSegments(), c - half, c + half,
-                    f.segmentDiameter(i),
-                    f.position(), f.velocity(), f.omega(),
+                    f.segmentDiameter(i), zPrev, s0, flex,
+                    flex ? c : f.position(),
+                    flex ? f.segmentVelocity(R, i) : f.velocity(),
+                    f.segmentOmega(i),
                     roles[fi] == role::fixed ? 0 : f.mass(), fi,
                     l.sX, l.sTheta, l.sV, l.sW, l.sTau, l.H, l.dX, l.dTheta
                 }
             );
+            zPrev = z;
+            s0 += f.segmentLength(i);
         }
     }
 }
@@ -536,7 +567,11 @@ void Foam::fiberInteractions::contact::candidates
                 {
                     // Two local segments: the pair once, both orders
                     const label p = g.byCell[e];
-                    if ((cl[e] && p < q) || g.cf[e] == Q.fiber)
+                    if
+                    (
+                        (cl[e] && p < q)
+                     || (g.cf[e] == Q.fiber && !selfPair(Q, segs[p]))
+                    )
                     {
                         continue;
                     }
@@ -642,7 +677,7 @@ void Foam::fiberInteractions::contact::sparseCandidates
                           + range_ + skin;
                         if
                         (
-                            P.fiber != Q.fiber
+                            (P.fiber != Q.fiber || selfPair(Q, P))
                          && magSqr(c[p] - c[q]) <= sqr(within)
                         )
                         {

@@ -229,6 +229,38 @@ void Foam::fiberIntegrator::load::transform(const vectorTensorTransform& T)
         }
     }
     M += T.t() ^ F;
+    forAll(Fs, i)
+    {
+        if (T.hasR())
+        {
+            Fs[i] = T.R() & Fs[i];
+            Ms[i] = T.R() & Ms[i];
+        }
+        Ms[i] += T.t() ^ Fs[i];
+    }
+}
+
+
+void Foam::fiberIntegrator::load::addForce
+(
+    const fiber& f,
+    const label i,
+    const vector& F,
+    const point& c
+)
+{
+    this->F += F;
+    M += c ^ F;
+    if (f.flexible())
+    {
+        if (Fs.empty())
+        {
+            Fs.setSize(f.nSegments(), Zero);
+            Ms.setSize(f.nSegments(), Zero);
+        }
+        Fs[i] += F;
+        Ms[i] += c ^ F;
+    }
 }
 
 
@@ -348,7 +380,8 @@ Foam::Ostream& Foam::operator<<
     const fiberIntegrator::load& l
 )
 {
-    os  << l.F << token::SPACE << l.M << token::SPACE << l.implicit;
+    os  << l.F << token::SPACE << l.M << token::SPACE << l.Fs
+        << token::SPACE << l.Ms << token::SPACE << l.implicit;
     if (l.implicit)
     {
         for
@@ -373,7 +406,7 @@ Foam::Ostream& Foam::operator<<
 Foam::Istream& Foam::operator>>(Istream& is, fiberIntegrator::load& l)
 {
     l = fiberIntegrator::load();
-    is >> l.F >> l.M >> l.implicit;
+    is >> l.F >> l.M >> l.Fs >> l.Ms >> l.implicit;
     if (l.implicit)
     {
         is  >> l.Kxx >> l.Kxt >> l.Ktx >> l.Ktt >> l.Cxx >> l.Cxt >> l.Ctx
