@@ -632,10 +632,44 @@ void testFlexibleSegmentLoads()
     check
     (
         "flexible.segmentLoads.applied",
-        l.Fs.size() == N && mag(l.F) == 0 && max(eP[0], eP[1]) < 1e-12
+        label(l.seg.size()) == N && mag(l.F) == 0 && max(eP[0], eP[1]) < 1e-12
      && eL[1] < 1e-9 && eL[0] > 30*eL[1] && turn > 0,
         det.str()
     );
+
+    // An implicit spring K and dashpot C along the axis on the middle
+    // segment's centre, with the spring's force F0 at the start: the
+    // chain moves as one body, by backward Euler V = h F0/(m + h C + h^2 K)
+    {
+        const label N3 = 3;
+        fiber g
+        (
+            fiber::straight(5, Zero, vector(1, 0, 0), N3, 2e-4, 2e-5, 1e3)
+        );
+        g.makeFlexible(1e9, 4e8);
+        const scalar K = 0.3, C = 2e-6, F0 = 1e-6, hs = 1e-5;
+        fiberIntegrator::load li;
+        li.addForce(g, 1, vector(F0, 0, 0), g.position());
+        li.addSpring
+        (
+            g, 1, K*sqr(vector(1, 0, 0)), C*sqr(vector(1, 0, 0)), Zero, Zero
+        );
+        flexibleChain work;
+        const List<fluidSample> s3(N3, fluidSample(Zero, Zero, 0));
+        work.advance(g, s3, hydro, Zero, hs, nullptr, &li);
+        const scalar Vref = hs*F0/(g.mass() + hs*C + sqr(hs)*K);
+        scalar eV = 0;
+        for (label i = 0; i < N3; ++i)
+        {
+            eV = max(eV, mag(work.velocities()[i] - vector(Vref, 0, 0)));
+        }
+        check
+        (
+            "flexible.segmentLoads.implicitSpring",
+            li.implicit && eV < 1e-12*Vref,
+            fmt(work.velocities()[0].x(), Vref, eV/Vref)
+        );
+    }
 
     // Transformed: c' = Q c + t, F' = Q F, M' = c' x F'
     const tensor Q(fiber::rotationQuaternion(vector(0.3, -0.2, 1)).R());
@@ -644,8 +678,8 @@ void testFlexibleSegmentLoads()
     lt.transform(vectorTensorTransform(t, Q, true));
     const point c0t((Q & (c0 + vector(0, 1e-5, 0))) + t);
     const scalar eT =
-        mag(lt.Fs[0] - (Q & F)) + mag(lt.Ms[0] - (c0t ^ (Q & F)))
-      + mag(lt.Fs[1]) + mag(lt.Ms[1]);
+        mag(lt.seg[0].F - (Q & F)) + mag(lt.seg[0].M - (c0t ^ (Q & F)))
+      + mag(lt.seg[1].F) + mag(lt.seg[1].M);
 
     OStringStream os;
     os.precision(17);
@@ -654,9 +688,9 @@ void testFlexibleSegmentLoads()
     fiberIntegrator::load lr;
     is >> lr;
     scalar eS = 0;
-    forAll(lr.Fs, i)
+    for (size_t i = 0; i < lr.seg.size(); ++i)
     {
-        eS += mag(lr.Fs[i] - lt.Fs[i]) + mag(lr.Ms[i] - lt.Ms[i]);
+        eS += mag(lr.seg[i].F - lt.seg[i].F) + mag(lr.seg[i].M - lt.seg[i].M);
     }
 
     fiber r
@@ -667,13 +701,13 @@ void testFlexibleSegmentLoads()
     lrigid.addForce(r, 2, F, point(0, 1e-4, 0));
     std::ostringstream det2;
     det2 << "transformed " << eT << ", streamed " << eS << " ("
-         << lr.Fs.size() << " segments), rigid fiber: "
-         << lrigid.Fs.size() << " segment loads";
+         << lr.seg.size() << " segments), rigid fiber: "
+         << lrigid.seg.size() << " segment loads";
     check
     (
         "flexible.segmentLoads.transformAndStream",
-        eT < 1e-15*mag(F)*(1 + mag(t) + mag(c0)) && lr.Fs.size() == N
-     && eS < 1e-20 && lrigid.Fs.empty() && mag(lrigid.F - F) == 0,
+        eT < 1e-15*mag(F)*(1 + mag(t) + mag(c0)) && label(lr.seg.size()) == N
+     && eS < 1e-20 && lrigid.seg.empty() && mag(lrigid.F - F) == 0,
         det2.str()
     );
 }

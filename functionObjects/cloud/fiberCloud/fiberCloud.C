@@ -210,7 +210,6 @@ Foam::fiberCloud::fiberCloud
     fixedSet_ = fiberInjection::fixedSets(injectionDict);
     fiberInjection::flexibleSets(injectionDict, setE_, setG_);
     setKappa_ = fiberInjection::curvatures(injectionDict);
-    checkFlexible(dict);
 
     if (restart)
     {
@@ -398,24 +397,6 @@ void Foam::fiberCloud::makeFlexible(fiber& f) const
     {
         flexibleChain::checkConnected(f);
         f.makeFlexible(E, setG_[f.setIndex()]);
-    }
-}
-
-
-void Foam::fiberCloud::checkFlexible(const dictionary& dict) const
-{
-    if (max(setE_) <= 0)
-    {
-        return;
-    }
-    if (!interactions_->actsOnFlexible())
-    {
-        FatalIOErrorInFunction(dict.subDict("interactions"))
-            << "Entry 'implicit on' of 'interactions' ("
-            << interactions_->type() << ") with flexible fiber sets (model "
-            << "flexible): implicit contacts act on a fiber's rigid motion;"
-            << " flexible fibers take explicit contacts (implicit off)"
-            << exit(FatalIOError);
     }
 }
 

@@ -162,9 +162,16 @@ Foam::scalar Foam::fiberCloud::subStepRate
     const fiber& f = fibers_[fi];
 
     // The rate the step control asks for on the mean flow (Eq. 22 or the
-    // error estimate, and the cell limit)
+    // error estimate, and the cell limit).  A flexible fiber under
+    // implicit contact springs takes the interval in one implicit step
+    // (the cell limit aside): the springs act against the partners'
+    // motion predicted over the interval, which the interval's length
+    // resolves (maxApproach), not sub-steps that would resolve the
+    // chain's response to a spring held at that prediction
+    const bool oneStep =
+        f.flexible() && interactions_->active() && step_[fi].load.implicit;
     scalar rate =
-        control_.rate(f, s, cellLength_[f.location().celli], &why);
+        control_.rate(f, s, cellLength_[f.location().celli], &why, oneStep);
 
     // Gravity can speed a fiber up within the sub-step beyond the speeds
     // the cell limit sees (a fiber from rest in a long step): keep

@@ -413,6 +413,33 @@ void Foam::flexibleChain::moduli
 }
 
 
+void Foam::flexibleChain::addInteraction
+(
+    const fiberIntegrator::load& l,
+    const point& c,
+    const scalar h,
+    segmentLoad& ld
+)
+{
+    // The explicit force and its moment about the segment's centre c; the
+    // implicit springs on the segment's displacement at the step's end,
+    // dX + h V, and dashpots on its velocity (fiberIntegrator::load)
+    ld.f += l.F;
+    ld.t += l.M - (c ^ l.F);
+    if (!l.implicit)
+    {
+        return;
+    }
+    const scalar tau = l.tau + h;
+    ld.A += h*l.Kxx + l.Cxx;
+    ld.B += h*l.Kxt + l.Cxt;
+    ld.C += h*l.Ktx + l.Ctx;
+    ld.D += h*l.Ktt + l.Ctt;
+    ld.f += tau*l.P - (l.Kxx & l.dX) - (l.Kxt & l.dTheta);
+    ld.t += tau*l.Q - (l.Ktx & l.dX) - (l.Ktt & l.dTheta);
+}
+
+
 void Foam::flexibleChain::advance
 (
     fiber& f,
@@ -425,13 +452,7 @@ void Foam::flexibleChain::advance
 )
 {
     const label N = f.nSegments();
-    if (ext && ext->implicit)
-    {
-        FatalErrorInFunction
-            << "Implicit interaction loads act on rigid fibers; fiber "
-            << f.id() << " is flexible" << exit(FatalError);
-    }
-    const bool segLoads = ext && ext->Fs.size() == N;
+    const bool segLoads = ext && label(ext->seg.size()) == N;
     const tensor R(f.R());
     List<segmentLoad>& loads = loads_;
     loads.setSize(N);
@@ -459,16 +480,13 @@ void Foam::flexibleChain::advance
         ld.f += f.segmentMass(i)*g;
         if (segLoads)
         {
-            // The interactions' force and its moment about the segment's
-            // centre
             const point c(f.position() + f.segmentOffset(R, i));
-            ld.f += ext->Fs[i];
-            ld.t += ext->Ms[i] - (c ^ ext->Fs[i]);
+            addInteraction(ext->seg[i], c, h, ld);
         }
     }
 
     assign(f);
-    step(loads, h);
+    step(loads, h, !(ext && ext->implicit));
     if (forces)
     {
         forces->F.setSize(N);
@@ -748,7 +766,8 @@ void Foam::flexibleChain::assembleJoint
 void Foam::flexibleChain::step
 (
     const UList<segmentLoad>& loads,
-    const scalar h
+    const scalar h,
+    const bool keepAngularMomentum
 )
 {
     // Block i: rows and columns [lambda_{i-1}, V_i, W_i]
@@ -805,7 +824,7 @@ void Foam::flexibleChain::step
         q_[i] = normalize(fiber::rotationQuaternion(h*W)*q_[i]);
     }
     updateDirections();
-    closeJoints();
+    closeJoints(keepAngularMomentum);
 }
 
 
@@ -819,13 +838,15 @@ void Foam::flexibleChain::updateDirections()
 }
 
 
-void Foam::flexibleChain::closeJoints()
+void Foam::flexibleChain::closeJoints(const bool keepAngularMomentum)
 {
     // The linearised step leaves each joint open by at most
     // (l/2)(h |W_j|^2 + h |W_j+1|^2)/2: the segments are moved (not
     // turned) to close them, the centre of mass (or the clamp) held
     const label N = nSegments();
     const point xG(clamped_ ? point(Zero) : centreOfMass());
+    vectorList& r0 = r0_;
+    r0 = r_;
     if (clamped_)
     {
         r_[0] = xClamp_ + 0.5*l_[0]*z_[0];
@@ -840,6 +861,42 @@ void Foam::flexibleChain::closeJoints()
         for (point& r : r_)
         {
             r += shift;
+        }
+    }
+    if (!clamped_ && keepAngularMomentum)
+    {
+        // The move changed the angular momentum by sum dr x m v: a rigid
+        // rotation of the velocities, O(h^2), gives it back (momentum and
+        // centre of mass unchanged), so that closing the joints keeps the
+        // angular momentum; about the principal axes of the chain's
+        // inertia, leaving out the axis of a nearly straight chain (whose
+        // inertia is the cross-section's), the inertia scaled to order
+        // one (OpenFOAM's eigen solver has absolute tolerances)
+        vector dL(Zero);
+        tensor IG(Zero);
+        forAll(r_, i)
+        {
+            const vector s(r_[i] - xG);
+            dL += (r_[i] - r0[i]) ^ (m_[i]*v_[i]);
+            IG += inertia(i) + m_[i]*((s & s)*tensor::I - s*s);
+        }
+        const scalar scale = tr(IG);
+        const symmTensor IGs(symm(IG)/scale);
+        const vector ev(eigenValues(IGs));
+        const tensor E(eigenVectors(IGs, ev));
+        vector dw(Zero);
+        const vector rows[3] = {E.x(), E.y(), E.z()};
+        for (label k = 0; k < 3; ++k)
+        {
+            if (ev[k] > 1e-2*cmptMax(ev))
+            {
+                dw -= ((rows[k] & dL)/(scale*ev[k]))*rows[k];
+            }
+        }
+        forAll(r_, i)
+        {
+            v_[i] += dw ^ (r_[i] - xG);
+            w_[i] += dw;
         }
     }
 }

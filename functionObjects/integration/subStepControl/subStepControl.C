@@ -159,7 +159,8 @@ Foam::scalar Foam::subStepControl::rate
     const fiber& f,
     const UList<fluidSample>& s,
     const scalar cellLength,
-    label* bound
+    label* bound,
+    const bool cellsOnly
 ) const
 {
     scalar r = 0;
@@ -184,6 +185,10 @@ Foam::scalar Foam::subStepControl::rate
         scales(f, s, gammaDot, speed, dudt);
         r = toleranceRate(f, gammaDot, speed, dudt);
         cells = speed/(maxCo_*cellLength);
+    }
+    if (cellsOnly)
+    {
+        r = 0;
     }
     if (bound)
     {

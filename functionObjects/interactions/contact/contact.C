@@ -80,12 +80,21 @@ void applyLoads
         // The explicit force with the dashpot's part C vp, at the contact
         // point (of a flexible fiber: on its segment)
         fiberIntegrator::load& l = loads[cp.local];
-        l.addForce(fibers[cp.local], cp.key[1], cp.F + (cp.C & cp.vp), cp.c);
+        const fiber& f = fibers[cp.local];
+        l.addForce(f, cp.key[1], cp.F + (cp.C & cp.vp), cp.c);
         if (magSqr(cp.K) > 0)
         {
-            l.addImplicit(cp.K, cp.C, cp.r, cp.vp);
+            l.addSpring(f, cp.key[1], cp.K, cp.C, cp.r, cp.vp);
         }
     }
+}
+
+
+//- Whether a pair's key is from the side that comes first (the lower
+//  fiber id; of one fiber, the lower segment)
+inline bool firstSide(const fiberInteractions::contact::pairKey& k)
+{
+    return k[0] < k[2] || (k[0] == k[2] && k[1] < k[3]);
 }
 
 
@@ -615,15 +624,33 @@ void Foam::fiberInteractions::contact::payBack
     }
     forAll(fibers, fi)
     {
-        const auto it = pending_.cfind(fibers[fi].id());
-        if (it.found())
+        const fiber& f = fibers[fi];
+        const tensor R(f.R());
+        for (label i = -1; i < (f.flexible() ? f.nSegments() : 0); ++i)
         {
-            // The impulse and its moment about the centre, over h
-            // (implicit: the sub-steps do not count it as their error)
+            const auto it = pending_.cfind(FixedList<label, 2>{f.id(), i});
+            if (!it.found())
+            {
+                continue;
+            }
+            // The impulse and its moment about the centre (of a flexible
+            // fiber: of the segment), over h (implicit: the sub-steps do
+            // not count it as their error)
             const vector F((*it)[0]/h);
-            loads[fi].implicit = true;
-            loads[fi].F += F;
-            loads[fi].M += (fibers[fi].position() ^ F) + (*it)[1]/h;
+            const point c
+            (
+                f.position() + (i < 0 ? vector(Zero) : f.segmentOffset(R, i))
+            );
+            fiberIntegrator::load& l = loads[fi];
+            l.implicit = true;
+            l.F += F;
+            l.M += (c ^ F) + (*it)[1]/h;
+            if (i >= 0)
+            {
+                fiberIntegrator::load& s = l.segment(f, i);
+                s.F += F;
+                s.M += (c ^ F) + (*it)[1]/h;
+            }
         }
     }
     pending_.clear();
@@ -770,7 +797,7 @@ void Foam::fiberInteractions::contact::settleFriction
     // Coulomb's bound it slides from the next interval on, held at the
     // bound.  A sliding contact goes on sliding while its tangential
     // velocity keeps the direction
-    const scalar sgn = k[0] < k[2] ? 1 : -1;
+    const scalar sgn = firstSide(k) ? 1 : -1;
     if (p.sticks)
     {
         const vector u
@@ -856,12 +883,13 @@ void Foam::fiberInteractions::contact::settle
         }
         const vector JQ(impulse(p, p.F, p.rThis, Q));
         const vector JO(impulse(p, -p.F, p.rOther, O));
-        const vector J(-0.5*(k[0] < k[2] ? JQ + JO : JO + JQ));
-        if (!pending_.found(k[0]))
+        const vector J(-0.5*(firstSide(k) ? JQ + JO : JO + JQ));
+        const FixedList<label, 2> to{k[0], Q.flexible ? k[1] : -1};
+        if (!pending_.found(to))
         {
-            pending_.insert(k[0], FixedList<vector, 2>(vector::zero));
+            pending_.insert(to, FixedList<vector, 2>(vector::zero));
         }
-        FixedList<vector, 2>& back = pending_[k[0]];
+        FixedList<vector, 2>& back = pending_[to];
         back[0] += J;
         back[1] += p.rThis ^ J;
     }
@@ -995,10 +1023,10 @@ void Foam::fiberInteractions::contact::readRestart(Istream& is)
     const label nP = readLabel(is);
     for (label i = 0; i < nP; ++i)
     {
-        const label id = readLabel(is);
+        FixedList<label, 2> to;
         FixedList<vector, 2> J;
-        is >> J[0] >> J[1];
-        pending_.set(id, J);
+        is >> to >> J[0] >> J[1];
+        pending_.set(to, J);
     }
     token h(is);
     if (h.isWord() && h.wordToken() == "contactInterval")

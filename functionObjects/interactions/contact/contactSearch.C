@@ -226,14 +226,17 @@ void Foam::fiberInteractions::contact::localSegments
             continue;
         }
         const fiber& f = fibers[fi];
-        const fiberIntegrator::load& l = loads ? (*loads)[fi] : none;
+        const fiberIntegrator::load& lf = loads ? (*loads)[fi] : none;
         const tensor R(f.R());
         const bool flex = f.flexible();
         vector zPrev(f.segmentDirection(R, 0));
         scalar s0 = 0;
         for (label i = 0; i < f.nSegments(); ++i)
         {
-            // A flexible fiber's segment moves as a body of its own
+            // A flexible fiber's segment moves as a body of its own (with
+            // its own load and record of its motion)
+            const fiberIntegrator::load& l =
+                !flex ? lf : lf.seg.size() ? lf.seg[i] : none;
             const point c(f.position() + f.segmentOffset(R, i));
             const vector z(f.segmentDirection(R, i));
             const vector half((0.5*f.segmentLength(i))*z);

@@ -229,15 +229,24 @@ void Foam::fiberIntegrator::load::transform(const vectorTensorTransform& T)
         }
     }
     M += T.t() ^ F;
-    forAll(Fs, i)
+    for (load& s : seg)
     {
-        if (T.hasR())
-        {
-            Fs[i] = T.R() & Fs[i];
-            Ms[i] = T.R() & Ms[i];
-        }
-        Ms[i] += T.t() ^ Fs[i];
+        s.transform(T);
     }
+}
+
+
+Foam::fiberIntegrator::load& Foam::fiberIntegrator::load::segment
+(
+    const fiber& f,
+    const label i
+)
+{
+    if (seg.empty())
+    {
+        seg.resize(f.nSegments());
+    }
+    return seg[i];
 }
 
 
@@ -253,28 +262,71 @@ void Foam::fiberIntegrator::load::addForce
     M += c ^ F;
     if (f.flexible())
     {
-        if (Fs.empty())
-        {
-            Fs.setSize(f.nSegments(), Zero);
-            Ms.setSize(f.nSegments(), Zero);
-        }
-        Fs[i] += F;
-        Ms[i] += c ^ F;
+        load& s = segment(f, i);
+        s.F += F;
+        s.M += c ^ F;
     }
+}
+
+
+void Foam::fiberIntegrator::load::addSpring
+(
+    const fiber& f,
+    const label i,
+    const tensor& K,
+    const tensor& C,
+    const vector& r,
+    const vector& vp
+)
+{
+    if (f.flexible())
+    {
+        implicit = true;
+        segment(f, i).addImplicit(K, C, r, vp);
+    }
+    else
+    {
+        addImplicit(K, C, r, vp);
+    }
+}
+
+
+void Foam::fiberIntegrator::load::recordMotion
+(
+    const vector& dx,
+    const vector& dtheta,
+    const vector& v,
+    const vector& w,
+    const scalar h
+)
+{
+    dX += dx;
+    dTheta += dtheta;
+    tau += h;
+    sX += h*dX;
+    sTheta += h*dTheta;
+    sTau += h*tau;
+    sV += h*v;
+    sW += h*w;
+    H += h;
 }
 
 
 void Foam::fiberIntegrator::load::record(const fiber& f, const scalar h)
 {
-    dX += f.dxPrev();
-    dTheta += f.dthetaPrev();
-    tau += h;
-    sX += h*dX;
-    sTheta += h*dTheta;
-    sTau += h*tau;
-    sV += h*f.velocity();
-    sW += h*f.omega();
-    H += h;
+    recordMotion(f.dxPrev(), f.dthetaPrev(), f.velocity(), f.omega(), h);
+    if (seg.size())
+    {
+        // A flexible fiber's segments: the implicit step moved each by h
+        // times its new velocities (the joints' closing aside)
+        const tensor R(f.R());
+        forAll(seg, i)
+        {
+            const vector v(f.segmentVelocity(R, label(i)));
+            const vector& w = f.segmentOmega(label(i));
+            seg[i].recordMotion(h*v, h*w, v, w, h);
+        }
+    }
 }
 
 
@@ -380,8 +432,7 @@ Foam::Ostream& Foam::operator<<
     const fiberIntegrator::load& l
 )
 {
-    os  << l.F << token::SPACE << l.M << token::SPACE << l.Fs
-        << token::SPACE << l.Ms << token::SPACE << l.implicit;
+    os  << l.F << token::SPACE << l.M << token::SPACE << l.implicit;
     if (l.implicit)
     {
         for
@@ -398,7 +449,11 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE << l.tau << token::SPACE << l.sX
         << token::SPACE << l.sTheta << token::SPACE << l.sTau
         << token::SPACE << l.sV << token::SPACE << l.sW
-        << token::SPACE << l.H;
+        << token::SPACE << l.H << token::SPACE << label(l.seg.size());
+    for (const fiberIntegrator::load& s : l.seg)
+    {
+        os << token::SPACE << s;
+    }
     return os;
 }
 
@@ -406,7 +461,7 @@ Foam::Ostream& Foam::operator<<
 Foam::Istream& Foam::operator>>(Istream& is, fiberIntegrator::load& l)
 {
     l = fiberIntegrator::load();
-    is >> l.F >> l.M >> l.Fs >> l.Ms >> l.implicit;
+    is >> l.F >> l.M >> l.implicit;
     if (l.implicit)
     {
         is  >> l.Kxx >> l.Kxt >> l.Ktx >> l.Ktt >> l.Cxx >> l.Cxt >> l.Ctx
@@ -414,6 +469,11 @@ Foam::Istream& Foam::operator>>(Istream& is, fiberIntegrator::load& l)
     }
     is  >> l.dX >> l.dTheta >> l.tau >> l.sX >> l.sTheta >> l.sTau >> l.sV
         >> l.sW >> l.H;
+    l.seg.resize(readLabel(is));
+    for (fiberIntegrator::load& s : l.seg)
+    {
+        is >> s;
+    }
     return is;
 }
 
