@@ -332,61 +332,10 @@ void Foam::fiberCloud::injectAtStart
 
 void Foam::fiberCloud::bend(fiber& f) const
 {
-    const scalar kappa = setKappa_[f.setIndex()];
-    if (kappa <= 0)
-    {
-        return;
-    }
-    scalar L = 0;
-    for (label i = 0; i < f.nSegments(); ++i)
-    {
-        L += f.segmentLength(i);
-    }
-    if (kappa*L > constant::mathematical::twoPi*(1 + 1e-12))
-    {
-        // A list entry's own size, longer than its set's
-        FatalErrorInFunction
-            << "Fiber " << f.id() << " of " << L << " m with the curvature "
-            << kappa << " of its set: more than a full turn (2 pi), the arc"
-            << " would overlap itself" << exit(FatalError);
-    }
-    const vector p(f.orientation());
-    vector n;
-    if (constraint_.active())
-    {
-        // In the plane of the case
-        const vector e(vector(1, 1, 1) - constraint_.freeDirections());
-        n = e ^ p;
-    }
-    else
-    {
-        // A plane through the chord at a random angle (from the id)
-        // (about the axis least aligned with the chord)
-        const vector a
-        (
-            mag(p.x()) <= min(mag(p.y()), mag(p.z())) ? vector(1, 0, 0)
-          : mag(p.y()) <= mag(p.z()) ? vector(0, 1, 0) : vector(0, 0, 1)
-        );
-        const vector b1((p ^ a)/mag(p ^ a));
-        const vector b2(p ^ b1);
-        const scalar phi =
-            constant::mathematical::twoPi
-           *counterRandom::uniform(7919, f.id(), 0);
-        n = std::cos(phi)*b1 + std::sin(phi)*b2;
-    }
-    fiber bent
+    fiberInjection::bend
     (
-        fiber::arc
-        (
-            f.id(), f.position(), p, n, f.nSegments(), f.segmentLength(0),
-            f.segmentDiameter(0), f.segmentDensity(0), kappa
-        )
+        f, setKappa_[f.setIndex()], constraint_.freeDirections()
     );
-    bent.setIndex(f.setIndex());
-    bent.setVelocity(f.velocity());
-    bent.setOmega(f.omega());
-    bent.location() = f.location();
-    f = bent;
 }
 
 

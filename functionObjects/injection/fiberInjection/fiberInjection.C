@@ -17,6 +17,7 @@ License
 #include "keywordCheck.H"
 #include "polyMesh.H"
 #include "Random.H"
+#include "counterRandom.H"
 #include "boundBox.H"
 #include "mathematicalConstants.H"
 
@@ -388,6 +389,7 @@ void regionCandidates
     const boolList& inside,
     const boundBox& bb,
     const labelUList& slots,
+    const label idBase,
     Random& rnd,
     PtrList<fiber>& cand,
     List<fiberSizes::size>& sz,
@@ -395,6 +397,7 @@ void regionCandidates
     label& m
 )
 {
+    const scalar kappa = set.dict.getOrDefault<scalar>("curvature", 0);
     bool fixedDir;
     const vector dir(directionOf(set.dict, fixedDir));
     const label nb = slots.size();
@@ -431,7 +434,17 @@ void regionCandidates
         );
         const label celli = mesh.findCell(c);
         ok[j*m] = (celli >= 0 && inside[celli]);
-        const fiber& f = cand[j];
+
+        // The segments as the fiber will have them: bent for a curvature
+        // (the fiber of slot k gets the id idBase + k, and its bend plane
+        // from it)
+        fiber f(cand[j]);
+        if (kappa > 0)
+        {
+            f.setId(idBase + slots[j]);
+            f.setIndex(set.index);
+            fiberInjection::bend(f, kappa, set.freeDirections);
+        }
         const tensor R(f.R());
         f.segmentCentres(pts);
         forAll(pts, i)
@@ -484,6 +497,7 @@ void inRegion
     );
 
     Random rnd(set.seed);
+    const label idBase = set.made.size();
     const label batch = 256;
     const label maxCandidates = 1000*nFibers + 100000;
     label nCandidates = 0, nRedrawn = 0, nPlaced = 0, nextSlot = 0;
@@ -514,7 +528,8 @@ void inRegion
         label m;
         regionCandidates
         (
-            mesh, images, set, inside, bb, slots, rnd, cand, sz, ok, m
+            mesh, images, set, inside, bb, slots, idBase, rnd, cand, sz, ok,
+            m
         );
         forAll(cand, j)
         {
@@ -696,6 +711,70 @@ Foam::boolList Foam::fiberInjection::fixedSets(const dictionary& dict)
         }
     }
     return boolList(std::move(fixed));
+}
+
+
+void Foam::fiberInjection::bend
+(
+    fiber& f,
+    const scalar kappa,
+    const vector& freeDirections
+)
+{
+    if (kappa <= 0)
+    {
+        return;
+    }
+    scalar L = 0;
+    for (label i = 0; i < f.nSegments(); ++i)
+    {
+        L += f.segmentLength(i);
+    }
+    if (kappa*L > constant::mathematical::twoPi*(1 + 1e-12))
+    {
+        // A list entry's own size, longer than its set's
+        FatalErrorInFunction
+            << "Fiber " << f.id() << " of " << L << " m with the curvature "
+            << kappa << " of its set: more than a full turn (2 pi), the arc"
+            << " would overlap itself" << exit(FatalError);
+    }
+    const vector p(f.orientation());
+    vector n;
+    if (cmptMin(freeDirections) < 0.5)
+    {
+        // In the plane of the case
+        const vector e(vector(1, 1, 1) - freeDirections);
+        n = e ^ p;
+    }
+    else
+    {
+        // A plane through the chord at a random angle (from the id)
+        // (about the axis least aligned with the chord)
+        const vector a
+        (
+            mag(p.x()) <= min(mag(p.y()), mag(p.z())) ? vector(1, 0, 0)
+          : mag(p.y()) <= mag(p.z()) ? vector(0, 1, 0) : vector(0, 0, 1)
+        );
+        const vector b1((p ^ a)/mag(p ^ a));
+        const vector b2(p ^ b1);
+        const scalar phi =
+            constant::mathematical::twoPi
+           *counterRandom::uniform(7919, f.id(), 0);
+        n = std::cos(phi)*b1 + std::sin(phi)*b2;
+    }
+    fiber bent
+    (
+        fiber::arc
+        (
+            f.id(), f.position(), p, n, f.nSegments(), f.segmentLength(0),
+            f.segmentDiameter(0), f.segmentDensity(0), kappa
+        )
+    );
+    bent.setIndex(f.setIndex());
+    bent.setVelocity(f.velocity());
+    bent.setOmega(f.omega());
+    bent.location() = f.location();
+    f = bent;
 }
 
 
