@@ -881,16 +881,24 @@ void Foam::flexibleChain::closeJoints(const bool keepAngularMomentum)
             IG += inertia(i) + m_[i]*((s & s)*tensor::I - s*s);
         }
         const scalar scale = tr(IG);
-        const symmTensor IGs(symm(IG)/scale);
-        const vector ev(eigenValues(IGs));
-        const tensor E(eigenVectors(IGs, ev));
+        Eigen::Matrix3d A;
+        for (label r = 0; r < 3; ++r)
+        {
+            for (label c = 0; c < 3; ++c)
+            {
+                A(r, c) = 0.5*(IG(r, c) + IG(c, r))/scale;
+            }
+        }
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(A);
+        const Eigen::Vector3d ev(es.eigenvalues());
         vector dw(Zero);
-        const vector rows[3] = {E.x(), E.y(), E.z()};
         for (label k = 0; k < 3; ++k)
         {
-            if (ev[k] > 1e-2*cmptMax(ev))
+            if (ev(k) > 1e-2*ev.maxCoeff())
             {
-                dw -= ((rows[k] & dL)/(scale*ev[k]))*rows[k];
+                const Eigen::Vector3d e(es.eigenvectors().col(k));
+                const vector ek(e(0), e(1), e(2));
+                dw -= ((ek & dL)/(scale*ev(k)))*ek;
             }
         }
         forAll(r_, i)
