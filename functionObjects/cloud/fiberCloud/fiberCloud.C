@@ -14,7 +14,6 @@ License
 #include "keywordCheck.H"
 #include "processorPolyPatch.H"
 #include "Switch.H"
-#include "counterRandom.H"
 #include "mathematicalConstants.H"
 
 #include <algorithm>
