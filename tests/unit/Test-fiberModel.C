@@ -2139,6 +2139,7 @@ void testFlexibleVibration();
 void testFlexibleStiffLimit();
 void testFlexibleState();
 void testFlexibleSegmentLoads();
+void testFlexibleLinks();
 void testFlexibleBuckling();
 
 
@@ -2174,6 +2175,7 @@ int main()
         testFlexibleStiffLimit();
         testFlexibleState();
         testFlexibleSegmentLoads();
+        testFlexibleLinks();
         testFlexibleBuckling();
     }
     catch (const Foam::error& err)

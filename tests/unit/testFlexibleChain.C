@@ -713,6 +713,213 @@ void testFlexibleSegmentLoads()
 }
 
 
+// * * * * * * * * * * * * * Self-contact links  * * * * * * * * * * * * * //
+
+void testFlexibleLinks()
+{
+    // A self-contact's spring and dashpot between segments 0 and 3 of a
+    // spinning flexible chain, with the contact's explicit force pair:
+    //  - solved with the step (the low-rank update of the block
+    //    tridiagonal system), the solution is the fixed point of the
+    //    one-sided springs each segment takes against its partner's
+    //    velocity: given the partner's contact-point velocity from the
+    //    linked step, the plain step with one-sided springs (separately
+    //    checked, flexible.segmentLoads.implicitSpring) gives the same
+    //    velocities;
+    //  - without fluid (no viscosity) the step keeps the momentum (the
+    //    pair is internal);
+    //  - a stiff link holds the contact: the points' relative velocity
+    //    falls as 1/(h^2 K) against the step without the spring;
+    //  - the link turns with a periodic transform and streams unchanged
+    const label N = 6;
+    const scalar l = 2e-4;
+    auto chain = [&]()
+    {
+        fiber f
+        (
+            fiber::straight
+            (
+                7, point(1, 2, 3), vector(1, 0, 0), N, l, 2e-5, 1e3
+            )
+        );
+        f.setVelocity(vector(0.1, -0.2, 0.05));
+        f.setOmega(vector(3, 20, -5));
+        f.makeFlexible(1e7, 4e6);
+        return f;
+    };
+    const fiber f0(chain());
+    const tensor R(f0.R());
+    const point xA(f0.position() + f0.segmentOffset(R, 0));
+    const point xB(f0.position() + f0.segmentOffset(R, 3));
+    const point c(0.5*(xA + xB) + vector(0, 2e-5, -1e-5));
+    const vector rA(c - xA), rB(c - xB);
+    const vector n(normalised(vector(0.3, 1, 0.2)));
+    const vector F(2e-6*n);
+    const scalar h = 1e-5;
+
+    // Link stiffness: normal and tangential, and dashpots.  For the fixed
+    // point, of the order of the segments' own inertia (h^2 K ~ h C ~ m,
+    // m = 6.3e-11 kg): a link far stiffer than that dominates both
+    // systems, and their difference is the round-off of their condition
+    // (1e-8 at h^2 K = 80 m)
+    auto springs = [&](const scalar kn, tensor& K, tensor& C)
+    {
+        K = kn*sqr(n) + 0.3*kn*(tensor::I - sqr(n));
+        C = 2e-4*std::sqrt(kn)*sqr(n) + 1e-6*(tensor::I - sqr(n));
+    };
+    tensor K(0.5*sqr(n) + 0.2*(tensor::I - sqr(n)));
+    tensor C(5e-6*sqr(n) + 2e-6*(tensor::I - sqr(n)));
+
+    const fiberHydrodynamics hydro(1000, false, 1);
+    const List<fluidSample> still(N, fluidSample(Zero, Zero, 0));
+    const List<fluidSample> water(N, fluidSample(Zero, Zero, 1e-6));
+    auto pointVelocity =
+        [](const flexibleChain& w, const label i, const vector& r)
+    {
+        return w.velocities()[i] + (w.omegas()[i] ^ r);
+    };
+    auto pairLoad = [&](fiberIntegrator::load& ld)
+    {
+        ld.addForce(f0, 0, F, c);
+        ld.addForce(f0, 3, -F, c);
+    };
+
+    // Linked, in water
+    fiberIntegrator::load ll;
+    pairLoad(ll);
+    ll.addLink(f0, 0, 3, rA, rB, K, C);
+    fiber g1(chain());
+    flexibleChain w1;
+    w1.advance(g1, water, hydro, Zero, h, nullptr, &ll);
+    const vector uA(pointVelocity(w1, 0, rA)), uB(pointVelocity(w1, 3, rB));
+
+    // One-sided springs against the partner's velocity from the linked
+    // step (the contact's form: explicit F + C vp, spring on own motion),
+    // and again with that velocity changed by a few ulp (1e-15): the
+    // round-off the system amplifies, the scale of the test's tolerance
+    auto oneSided = [&](const scalar eps)
+    {
+        const vector vB(uB*(1 + eps)), vA(uA*(1 - eps));
+        fiberIntegrator::load lo;
+        lo.addForce(f0, 0, F + (C & vB), c);
+        lo.addForce(f0, 3, -F + (C & vA), c);
+        lo.addSpring(f0, 0, K, C, rA, vB);
+        lo.addSpring(f0, 3, K, C, rB, vA);
+        fiber g(chain());
+        flexibleChain w;
+        w.advance(g, water, hydro, Zero, h, nullptr, &lo);
+        return w;
+    };
+    auto differ = [&](const flexibleChain& a, const flexibleChain& b)
+    {
+        scalar e = 0;
+        for (label i = 0; i < N; ++i)
+        {
+            e = max(e, mag(a.velocities()[i] - b.velocities()[i]));
+            e = max(e, l*mag(a.omegas()[i] - b.omegas()[i]));
+        }
+        return e;
+    };
+    const flexibleChain w2(oneSided(0));
+    const scalar eFix = differ(w1, w2);
+    const scalar eUlp = differ(w2, oneSided(1e-15));
+    scalar vScale = 0;
+    for (label i = 0; i < N; ++i)
+    {
+        vScale = max(vScale, mag(w1.velocities()[i]));
+    }
+    std::ostringstream detFix;
+    detFix
+        << "velocities differ by " << eFix << " m/s of " << vScale
+        << " (" << eFix/vScale << "); a change of the partner's velocity "
+        << "by 1e-15 changes them by " << eUlp << "; contact points' "
+        << "relative velocity " << mag(uA - uB);
+    check
+    (
+        "flexible.links.pairSolved",
+        ll.implicit && eFix < 10*eUlp && eFix < 1e-8*vScale
+     && mag(uA - uB) > 0,
+        detFix.str()
+    );
+
+    // Momentum in still fluid without viscosity
+    {
+        fiber g(chain());
+        const vector P0(g.mass()*g.velocity());
+        flexibleChain w;
+        w.advance(g, still, hydro, Zero, h, nullptr, &ll);
+        const scalar eP = mag(w.momentum() - P0)/mag(P0);
+        check
+        (
+            "flexible.links.momentum",
+            eP < 1e-12,
+            fmt(mag(w.momentum()), mag(P0), eP)
+        );
+    }
+
+    // A stiff link holds the contact: relative velocity of the points
+    // against the step without the spring (the force pair alone)
+    scalar ratio[2];
+    const scalar kns[2] = {1e4, 1e6};
+    scalar vFree = 0;
+    {
+        fiberIntegrator::load lf;
+        pairLoad(lf);
+        fiber g(chain());
+        flexibleChain w;
+        w.advance(g, still, hydro, Zero, h, nullptr, &lf);
+        vFree = mag(pointVelocity(w, 0, rA) - pointVelocity(w, 3, rB));
+    }
+    for (label k = 0; k < 2; ++k)
+    {
+        tensor Ks, Cs;
+        springs(kns[k], Ks, Cs);
+        fiberIntegrator::load ls;
+        pairLoad(ls);
+        ls.addLink(f0, 0, 3, rA, rB, Ks, Cs);
+        fiber g(chain());
+        flexibleChain w;
+        w.advance(g, still, hydro, Zero, h, nullptr, &ls);
+        ratio[k] =
+            mag(pointVelocity(w, 0, rA) - pointVelocity(w, 3, rB))/vFree;
+    }
+    std::ostringstream det;
+    det << "relative velocity / without spring: " << ratio[0] << " (kn "
+        << kns[0] << "), " << ratio[1] << " (kn " << kns[1] << ")";
+    check
+    (
+        "flexible.links.stiffHolds",
+        ratio[0] < 0.1 && ratio[1] < 0.02*ratio[0] && ratio[1] > 0,
+        det.str()
+    );
+
+    // Transformed and streamed
+    const tensor Q(fiber::rotationQuaternion(vector(0.3, -0.2, 1)).R());
+    fiberIntegrator::load lt(ll);
+    lt.transform(vectorTensorTransform(vector(1, 2, 3), Q, true));
+    OStringStream os;
+    os.precision(17);
+    os << lt;
+    IStringStream is(os.str());
+    fiberIntegrator::load lr;
+    is >> lr;
+    const fiberIntegrator::link& a = lt.links[0];
+    const fiberIntegrator::link& b = lr.links[0];
+    const scalar eT =
+        mag(a.rA - (Q & rA)) + mag(a.rB - (Q & rB))
+      + mag(a.K - (Q & K & Q.T()))/mag(K);
+    const scalar eS =
+        mag(a.rA - b.rA) + mag(a.rB - b.rB) + mag(a.K - b.K) + mag(a.C - b.C);
+    check
+    (
+        "flexible.links.transformAndStream",
+        lr.links.size() == 1 && b.i == 0 && b.j == 3 && eT < 1e-15
+     && eS < 1e-20,
+        fmt(eT, eS, eT + eS)
+    );
+}
+
+
 // * * * * * * * * * * * * * * Buckling in shear  * * * * * * * * * * * * * //
 
 namespace

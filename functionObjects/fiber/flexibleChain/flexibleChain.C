@@ -485,8 +485,16 @@ void Foam::flexibleChain::advance
         }
     }
 
+    const bool linked = segLoads && !ext->links.empty();
+    if (linked)
+    {
+        addLinkForces(*ext, loads);
+    }
     assign(f);
-    step(loads, h, !(ext && ext->implicit));
+    step
+    (
+        loads, h, !(ext && ext->implicit), linked ? &ext->links : nullptr
+    );
     if (forces)
     {
         forces->F.setSize(N);
@@ -763,34 +771,37 @@ void Foam::flexibleChain::assembleJoint
 }
 
 
-void Foam::flexibleChain::step
+void Foam::flexibleChain::addLinkForces
 (
-    const UList<segmentLoad>& loads,
-    const scalar h,
-    const bool keepAngularMomentum
+    const fiberIntegrator::load& l,
+    UList<segmentLoad>& loads
 )
 {
-    // Block i: rows and columns [lambda_{i-1}, V_i, W_i]
-    const label N = nSegments();
-    updateDirections();
-    if (!work_)
+    for (const fiberIntegrator::link& k : l.links)
     {
-        work_.reset(new blocks());
+        const fiberIntegrator::load& a = l.seg[k.i];
+        const fiberIntegrator::load& b = l.seg[k.j];
+        const vector F
+        (
+            -(
+                k.K
+              & ((a.dX + (a.dTheta ^ k.rA)) - (b.dX + (b.dTheta ^ k.rB)))
+            )
+        );
+        loads[k.i].f += F;
+        loads[k.i].t += k.rA ^ F;
+        loads[k.j].f -= F;
+        loads[k.j].t -= k.rB ^ F;
     }
-    blocks& B = *work_;
-    B.reset(N);
-    for (label i = 0; i < N; ++i)
-    {
-        assembleSegment(i, loads[i], h, B);
-        if (i > 0 || clamped_)
-        {
-            assembleJoint(i, h, B);
-        }
-    }
+}
 
-    // Block tridiagonal elimination (O(N)): X_i = D_i'^-1 U_i,
+
+void Foam::flexibleChain::solve(blocks& B) const
+{
+    // Block tridiagonal elimination: X_i = D_i'^-1 U_i,
     // y_i = D_i'^-1 b_i', D_{i+1}' = D_{i+1} - L_{i+1} X_i, ...; then
     // x_i = y_i - X_i x_{i+1}
+    const label N = B.D.size();
     List<Matrix9>& X = B.U;
     for (label i = 0; i < N; ++i)
     {
@@ -812,6 +823,120 @@ void Foam::flexibleChain::step
     {
         x[i] -= X[i]*x[i + 1];
     }
+}
+
+
+void Foam::flexibleChain::solveLinked
+(
+    blocks& B,
+    const std::vector<fiberIntegrator::link>& links,
+    const scalar h
+) const
+{
+    // (T + U M U^T) x = b with T the chain's system, M = diag(h K + C)
+    // and U's columns, per link and direction e: e and rA x e in the
+    // rows of segment i, -e and -rB x e in those of j (U^T x is the
+    // relative velocity of the contact points).  With y = T^-1 b and
+    // Z = T^-1 U: x = y - Z M (I + U^T Z M)^-1 U^T y
+    const label n = 3*label(links.size());
+    const blocks T(B);
+    solve(B);
+
+    // U^T x, component a (link a/3, direction a%3)
+    auto project = [&links](const List<Vector9>& x, const label a)
+    {
+        const fiberIntegrator::link& k = links[a/3];
+        const auto part = [&x](const label s, const vector& r)
+        {
+            const vector V(x[s](iV), x[s](iV + 1), x[s](iV + 2));
+            const vector W(x[s](iW), x[s](iW + 1), x[s](iW + 2));
+            return V + (W ^ r);
+        };
+        return (part(k.i, k.rA) - part(k.j, k.rB)).component(a % 3);
+    };
+
+    List<List<Vector9>> Z(n);
+    Eigen::MatrixXd S(n, n), M(Eigen::MatrixXd::Zero(n, n));
+    Eigen::VectorXd Uy(n);
+    for (label a = 0; a < n; ++a)
+    {
+        const fiberIntegrator::link& k = links[a/3];
+        vector e(Zero);
+        e.component(a % 3) = 1;
+        blocks Ba(T);
+        for (Vector9& b : Ba.b)
+        {
+            b.setZero();
+        }
+        addTo(Ba.b[k.i], iV, e);
+        addTo(Ba.b[k.i], iW, k.rA ^ e);
+        addTo(Ba.b[k.j], iV, -e);
+        addTo(Ba.b[k.j], iW, -(k.rB ^ e));
+        solve(Ba);
+        Z[a].transfer(Ba.b);
+        Uy(a) = project(B.b, a);
+        const tensor Mk(h*k.K + k.C);
+        for (label c = 0; c < 3; ++c)
+        {
+            M(a, 3*(a/3) + c) = Mk(a % 3, c);
+        }
+    }
+    for (label a = 0; a < n; ++a)
+    {
+        for (label c = 0; c < n; ++c)
+        {
+            S(a, c) = project(Z[c], a);
+        }
+    }
+    const Eigen::VectorXd coef
+    (
+        M*(Eigen::MatrixXd::Identity(n, n) + S*M).partialPivLu().solve(Uy)
+    );
+    forAll(B.b, i)
+    {
+        for (label a = 0; a < n; ++a)
+        {
+            B.b[i] -= coef(a)*Z[a][i];
+        }
+    }
+}
+
+
+void Foam::flexibleChain::step
+(
+    const UList<segmentLoad>& loads,
+    const scalar h,
+    const bool keepAngularMomentum,
+    const std::vector<fiberIntegrator::link>* links
+)
+{
+    // Block i: rows and columns [lambda_{i-1}, V_i, W_i]
+    const label N = nSegments();
+    updateDirections();
+    if (!work_)
+    {
+        work_.reset(new blocks());
+    }
+    blocks& B = *work_;
+    B.reset(N);
+    for (label i = 0; i < N; ++i)
+    {
+        assembleSegment(i, loads[i], h, B);
+        if (i > 0 || clamped_)
+        {
+            assembleJoint(i, h, B);
+        }
+    }
+
+    if (links && !links->empty())
+    {
+        solveLinked(B, *links, h);
+    }
+    else
+    {
+        solve(B);
+    }
+    const List<Vector9>& x = B.b;
 
     // Move
     for (label i = 0; i < N; ++i)

@@ -50,6 +50,7 @@ struct contribution
     vector F;
     point c;
     vector r;
+    vector rOther;
     tensor K;
     tensor C;
     vector vp;
@@ -82,9 +83,22 @@ void applyLoads
         fiberIntegrator::load& l = loads[cp.local];
         const fiber& f = fibers[cp.local];
         l.addForce(f, cp.key[1], cp.F + (cp.C & cp.vp), cp.c);
-        if (magSqr(cp.K) > 0)
+        if (!(magSqr(cp.K) > 0))
+        {
+            continue;
+        }
+        if (cp.key[0] != cp.key[2])
         {
             l.addSpring(f, cp.key[1], cp.K, cp.C, cp.r, cp.vp);
+        }
+        else if (cp.key[1] < cp.key[3])
+        {
+            // A self-contact: one spring between the two segments, coupled
+            // in the chain's step
+            l.addLink
+            (
+                f, cp.key[1], cp.key[3], cp.r, cp.rOther, cp.K, cp.C
+            );
         }
     }
 }
@@ -386,10 +400,14 @@ void Foam::fiberInteractions::contact::implicitSprings
 {
     // Each side moves against the partner's predicted velocity as if the
     // partner moved oppositely (a free pair: twice the spring on one
-    // side's motion) or not at all (a fixed one)
-    const bool free = A.m > 0 && B.m > 0;
+    // side's motion) or not at all (a fixed one).  Two segments of one
+    // fiber (a self-contact): the spring itself on their relative motion,
+    // which the chain's step solves (fiberIntegrator::link)
+    const bool self = A.fiber == B.fiber;
+    const bool free = A.m > 0 && B.m > 0 && !self;
     const scalar phi = free ? 2 : 1;
-    p.vp = free ? 0.5*(vA + vB) : (A.m > 0 ? vB : vA);
+    p.vp =
+        self ? vector(Zero) : free ? 0.5*(vA + vB) : (A.m > 0 ? vB : vA);
     const tensor nn(sqr(n));
     p.K = (phi*kn_)*nn;
     p.C = (phi*2*zeta_*std::sqrt(m*kn_))*nn;
@@ -732,7 +750,8 @@ void Foam::fiberInteractions::contact::interact
             (
                 contribution
                 {
-                    k, Q.local, FQ, pl.c, pl.c - Q.x, pl.K, pl.C, pl.vp
+                    k, Q.local, FQ, pl.c, pl.c - Q.x, pl.c - P.x, pl.K,
+                    pl.C, pl.vp
                 }
             );
             if (implicit_ && magSqr(pl.K) > 0)
@@ -875,9 +894,10 @@ void Foam::fiberInteractions::contact::settle
             settleFriction(k, p, Q, O);
         }
 
-        // A fixed partner, or one that did not move in the interval: no
-        // pair to balance
-        if (!(O.m > 0) || !(O.H > 0) || !(Q.H > 0))
+        // A fixed partner, or one that did not move in the interval, or a
+        // self-contact (solved as a pair in the chain's step): no pair to
+        // balance
+        if (!(O.m > 0) || !(O.H > 0) || !(Q.H > 0) || k[0] == k[2])
         {
             continue;
         }

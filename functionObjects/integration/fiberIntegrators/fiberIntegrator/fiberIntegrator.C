@@ -233,6 +233,17 @@ void Foam::fiberIntegrator::load::transform(const vectorTensorTransform& T)
     {
         s.transform(T);
     }
+    if (T.hasR())
+    {
+        const tensor& R = T.R();
+        for (link& k : links)
+        {
+            k.rA = R & k.rA;
+            k.rB = R & k.rB;
+            k.K = R & k.K & R.T();
+            k.C = R & k.C & R.T();
+        }
+    }
 }
 
 
@@ -288,6 +299,24 @@ void Foam::fiberIntegrator::load::addSpring
     {
         addImplicit(K, C, r, vp);
     }
+}
+
+
+void Foam::fiberIntegrator::load::addLink
+(
+    const fiber& f,
+    const label i,
+    const label j,
+    const vector& rA,
+    const vector& rB,
+    const tensor& K,
+    const tensor& C
+)
+{
+    // Both segments keep the record of their motion
+    implicit = true;
+    segment(f, i);
+    links.push_back(link{i, j, rA, rB, K, C});
 }
 
 
@@ -454,6 +483,13 @@ Foam::Ostream& Foam::operator<<
     {
         os << token::SPACE << s;
     }
+    os << token::SPACE << label(l.links.size());
+    for (const fiberIntegrator::link& k : l.links)
+    {
+        os  << token::SPACE << k.i << token::SPACE << k.j
+            << token::SPACE << k.rA << token::SPACE << k.rB
+            << token::SPACE << k.K << token::SPACE << k.C;
+    }
     return os;
 }
 
@@ -473,6 +509,11 @@ Foam::Istream& Foam::operator>>(Istream& is, fiberIntegrator::load& l)
     for (fiberIntegrator::load& s : l.seg)
     {
         is >> s;
+    }
+    l.links.resize(readLabel(is));
+    for (fiberIntegrator::link& k : l.links)
+    {
+        is >> k.i >> k.j >> k.rA >> k.rB >> k.K >> k.C;
     }
     return is;
 }
