@@ -524,7 +524,7 @@ void Foam::fiberCloud::interact(const scalar t, const scalar h)
     ++nIntervals_;
     forAll(step_, fi)
     {
-        step_[fi].load = loads[fi];
+        step_[fi].load = std::move(loads[fi]);
     }
 }
 
@@ -534,11 +534,15 @@ void Foam::fiberCloud::settle()
     List<fiberIntegrator::load> loads(step_.size());
     forAll(step_, fi)
     {
-        loads[fi] = step_[fi].load;
+        loads[fi] = std::move(step_[fi].load);
     }
     const std::clock_t c0 = std::clock();
     interactions_->settle(fibers_, roles(), loads);
     cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
+    forAll(step_, fi)
+    {
+        step_[fi].load = std::move(loads[fi]);
+    }
 }
 
 

@@ -602,9 +602,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
         segs.clear();
         cand.clear();
         near_.inReach.clear();
-        localSegments(fibers, roles, segs);
-        near_.skin = 0.5*reach(segs);
-        segs.clear();
+        near_.skin = 0.5*reach(fibers, roles);
         near_.r = gather(fibers, roles, segs, nullptr, near_.skin);
         candidates(segs, near_.r, cand, near_.skin, &near_.inReach);
         near_.valid = true;
@@ -783,6 +781,12 @@ void Foam::fiberInteractions::contact::interact
         }
     }
     count(touching, close);
+
+    // The buffers back, for the next interval's search (their capacity)
+    segs.clear();
+    cand.clear();
+    near_.segs.transfer(segs);
+    near_.inReach.transfer(cand);
 }
 
 
@@ -869,7 +873,8 @@ void Foam::fiberInteractions::contact::settle
     // which the sum is not zero where the partners did not move as each
     // side predicted: each gets -(J_A + J_B)/2 back at the contact point
     // at the next interval, so the pair's impulses are equal and opposite
-    DynamicList<segment> segs;
+    DynamicList<segment>& segs = settleSegs_;
+    segs.clear();
     gather(fibers, roles, segs, &loads);
     HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
         where(2*segs.size());

@@ -198,6 +198,29 @@ void Foam::fiberInteractions::contact::findPeriodic()
 
 Foam::scalar Foam::fiberInteractions::contact::reach
 (
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles
+) const
+{
+    scalar r = 0;
+    forAll(fibers, fi)
+    {
+        if (roles[fi] == role::absent)
+        {
+            continue;
+        }
+        const fiber& f = fibers[fi];
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            r = max(r, f.segmentLength(i) + f.segmentDiameter(i));
+        }
+    }
+    return returnReduce(r, maxOp<scalar>()) + range_;
+}
+
+
+Foam::scalar Foam::fiberInteractions::contact::reach
+(
     const UList<segment>& segs
 ) const
 {
