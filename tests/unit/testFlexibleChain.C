@@ -576,6 +576,24 @@ void testFlexibleState()
 
 // * * * * * * * * * * * * Loads of the interactions  * * * * * * * * * * //
 
+namespace
+{
+
+//- A load written with 17 digits and read back
+fiberIntegrator::load streamed(const fiberIntegrator::load& l)
+{
+    OStringStream os;
+    os.precision(17);
+    os << l;
+    IStringStream is(os.str());
+    fiberIntegrator::load r;
+    is >> r;
+    return r;
+}
+
+} // End anonymous namespace
+
+
 void testFlexibleSegmentLoads()
 {
     // The interactions' explicit loads by segment (contacts): a pair of
@@ -681,12 +699,7 @@ void testFlexibleSegmentLoads()
         mag(lt.seg[0].F - (Q & F)) + mag(lt.seg[0].M - (c0t ^ (Q & F)))
       + mag(lt.seg[1].F) + mag(lt.seg[1].M);
 
-    OStringStream os;
-    os.precision(17);
-    os << lt;
-    IStringStream is(os.str());
-    fiberIntegrator::load lr;
-    is >> lr;
+    const fiberIntegrator::load lr(streamed(lt));
     scalar eS = 0;
     for (size_t i = 0; i < lr.seg.size(); ++i)
     {
@@ -784,13 +797,21 @@ void testFlexibleLinks()
         ld.addForce(f0, 3, -F, c);
     };
 
+    // One step h of a fresh chain in fluid s under load ld
+    auto stepped =
+        [&](const fiberIntegrator::load& ld, const List<fluidSample>& s)
+    {
+        fiber g(chain());
+        flexibleChain w;
+        w.advance(g, s, hydro, Zero, h, nullptr, &ld);
+        return w;
+    };
+
     // Linked, in water
     fiberIntegrator::load ll;
     pairLoad(ll);
     ll.addLink(f0, 0, 3, rA, rB, K, C);
-    fiber g1(chain());
-    flexibleChain w1;
-    w1.advance(g1, water, hydro, Zero, h, nullptr, &ll);
+    const flexibleChain w1(stepped(ll, water));
     const vector uA(pointVelocity(w1, 0, rA)), uB(pointVelocity(w1, 3, rB));
 
     // One-sided springs against the partner's velocity from the linked
@@ -805,10 +826,7 @@ void testFlexibleLinks()
         lo.addForce(f0, 3, -F + (C & vA), c);
         lo.addSpring(f0, 0, K, C, rA, vB);
         lo.addSpring(f0, 3, K, C, rB, vA);
-        fiber g(chain());
-        flexibleChain w;
-        w.advance(g, water, hydro, Zero, h, nullptr, &lo);
-        return w;
+        return stepped(lo, water);
     };
     auto differ = [&](const flexibleChain& a, const flexibleChain& b)
     {
@@ -844,10 +862,8 @@ void testFlexibleLinks()
 
     // Momentum in still fluid without viscosity
     {
-        fiber g(chain());
-        const vector P0(g.mass()*g.velocity());
-        flexibleChain w;
-        w.advance(g, still, hydro, Zero, h, nullptr, &ll);
+        const vector P0(f0.mass()*f0.velocity());
+        const flexibleChain w(stepped(ll, still));
         const scalar eP = mag(w.momentum() - P0)/mag(P0);
         check
         (
@@ -865,9 +881,7 @@ void testFlexibleLinks()
     {
         fiberIntegrator::load lf;
         pairLoad(lf);
-        fiber g(chain());
-        flexibleChain w;
-        w.advance(g, still, hydro, Zero, h, nullptr, &lf);
+        const flexibleChain w(stepped(lf, still));
         vFree = mag(pointVelocity(w, 0, rA) - pointVelocity(w, 3, rB));
     }
     for (label k = 0; k < 2; ++k)
@@ -877,9 +891,7 @@ void testFlexibleLinks()
         fiberIntegrator::load ls;
         pairLoad(ls);
         ls.addLink(f0, 0, 3, rA, rB, Ks, Cs);
-        fiber g(chain());
-        flexibleChain w;
-        w.advance(g, still, hydro, Zero, h, nullptr, &ls);
+        const flexibleChain w(stepped(ls, still));
         ratio[k] =
             mag(pointVelocity(w, 0, rA) - pointVelocity(w, 3, rB))/vFree;
     }
@@ -897,12 +909,7 @@ void testFlexibleLinks()
     const tensor Q(fiber::rotationQuaternion(vector(0.3, -0.2, 1)).R());
     fiberIntegrator::load lt(ll);
     lt.transform(vectorTensorTransform(vector(1, 2, 3), Q, true));
-    OStringStream os;
-    os.precision(17);
-    os << lt;
-    IStringStream is(os.str());
-    fiberIntegrator::load lr;
-    is >> lr;
+    const fiberIntegrator::load lr(streamed(lt));
     const fiberIntegrator::link& a = lt.links[0];
     const fiberIntegrator::link& b = lr.links[0];
     const scalar eT =
