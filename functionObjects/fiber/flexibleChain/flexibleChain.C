@@ -858,12 +858,13 @@ void Foam::flexibleChain::solveLinked
     List<List<Vector9>> Z(n);
     Eigen::MatrixXd S(n, n), M(Eigen::MatrixXd::Zero(n, n));
     Eigen::VectorXd Uy(n);
+    blocks Ba;
     for (label a = 0; a < n; ++a)
     {
         const fiberIntegrator::link& k = links[a/3];
         vector e(Zero);
         e.component(a % 3) = 1;
-        blocks Ba(T);
+        Ba = T;
         for (Vector9& b : Ba.b)
         {
             b.setZero();

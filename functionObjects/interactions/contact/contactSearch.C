@@ -219,20 +219,6 @@ Foam::scalar Foam::fiberInteractions::contact::reach
 }
 
 
-Foam::scalar Foam::fiberInteractions::contact::reach
-(
-    const UList<segment>& segs
-) const
-{
-    scalar r = 0;
-    for (const segment& s : segs)
-    {
-        r = max(r, mag(s.b - s.a) + s.d);
-    }
-    return returnReduce(r, maxOp<scalar>()) + range_;
-}
-
-
 void Foam::fiberInteractions::contact::localSegments
 (
     const PtrList<fiber>& fibers,
@@ -293,7 +279,7 @@ Foam::scalar Foam::fiberInteractions::contact::gather
 ) const
 {
     localSegments(fibers, roles, segs, loads);
-    const scalar r = reach(segs) + skin;
+    const scalar r = reach(fibers, roles) + skin;
     addImages(segs, r);
     addGhosts(segs, r);
     return r;
