@@ -317,28 +317,41 @@ Foam::scalar Foam::fiberInteractions::contact::pairLimit
     const segment& A,
     const segment& B,
     const scalar h,
+    const scalar rLambda,
     scalar& lambda
 ) const
 {
-    // A pair that cannot limit the interval (its gap at least that of the
-    // centres less the half lengths, its speed at most that of the centres
-    // plus the turning ends) needs no closest points (it does not touch,
-    // so it does not slide); its speed per distance still bounds lambda
+    // The velocity gradient at the scale of the pairs beyond the search
+    // (lambda): the relative speed of the centres per distance, of pairs
+    // at least rLambda apart (a near pair's speed per distance of centres
+    // measures its contact or its turning, not the flow: a crossing pair's
+    // diverges); the ends turn about the centres at the rates at which the
+    // axes turn (a spin about a segment's own axis, as where fibers roll
+    // on each other, moves no point of the axis)
     const scalar s = mag(0.5*(A.a + A.b - B.a - B.b));
     const scalar lA = mag(A.b - A.a);
     const scalar lB = mag(B.b - B.a);
-    const scalar gLow =
-        s - 0.5*(lA + lB + A.d + B.d) - range_ + maxApproach_*min(A.d, B.d);
-    const scalar vUp =
+    const scalar vc =
         mag
         (
             A.v - B.v + (A.w ^ (0.5*(A.a + A.b) - A.x))
           - (B.w ^ (0.5*(B.a + B.b) - B.x))
-        )
-      + 0.5*(mag(A.w)*lA + mag(B.w)*lB);
+        );
+    if (s >= rLambda && s > 0)
+    {
+        lambda = max(lambda, vc/s);
+    }
+
+    // A pair that cannot limit the interval (its gap at least that of the
+    // centres less the half lengths, its speed at most that of the centres
+    // plus the turning ends) needs no closest points (it does not touch,
+    // so it does not slide)
+    const scalar gLow =
+        s - 0.5*(lA + lB + A.d + B.d) - range_ + maxApproach_*min(A.d, B.d);
+    const scalar vUp =
+        vc + 0.5*(mag(A.w ^ (A.b - A.a)) + mag(B.w ^ (B.b - B.a)));
     if (gLow > 0 && vUp*h <= gLow)
     {
-        lambda = max(lambda, vUp/s);
         return h;
     }
 
@@ -364,7 +377,6 @@ Foam::scalar Foam::fiberInteractions::contact::pairLimit
         const vector n((r.a - r.b)/max(dist, VSMALL));
         hp = min(hp, slideLimit(A, B, n, 0.5*(A.d + B.d) - dist, vr));
     }
-    lambda = max(lambda, s > 0 ? mag(vr)/s : 0);
     return hp;
 }
 
@@ -378,9 +390,10 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     const scalar hMax
 ) const
 {
-    // The candidates; their largest relative speed per distance of
-    // centres, with the fibers' rotation rates, is the velocity gradient
-    // seen by the fibers, lambda
+    // The candidates; the largest relative speed per distance of the
+    // centres of those at least a reach (r - skin) apart, with the rates
+    // at which the segments' axes turn, is the velocity gradient seen by
+    // the fibers, lambda
     scalar h = hMax;
     scalar lambda = 0;
     for (const FixedList<label, 2>& ij : cand)
@@ -388,14 +401,14 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
         // Both local: the pair once
         if (!(segs[ij[1]].local >= 0 && ij[1] < ij[0]))
         {
-            h = pairLimit(segs[ij[0]], segs[ij[1]], h, lambda);
+            h = pairLimit(segs[ij[0]], segs[ij[1]], h, r - skin, lambda);
         }
     }
 
     // Any other pair has centres more than reach + skin apart and surfaces
-    // more than skin: it closes at most at lambda times the centres'
-    // distance, and never faster than the range of all the segments' end
-    // velocities
+    // more than skin: where the velocity varies smoothly over a reach, it
+    // closes at most at lambda times the centres' distance, and never
+    // faster than the range of all the segments' end velocities
     vector vMin(vector::uniform(GREAT));
     vector vMax(vector::uniform(-GREAT));
     for (const segment& s : segs)
@@ -404,7 +417,8 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
         {
             continue;
         }
-        lambda = max(lambda, mag(s.w));
+        const scalar l = mag(s.b - s.a);
+        lambda = max(lambda, l > 0 ? mag(s.w ^ (s.b - s.a))/l : mag(s.w));
         for (const point& e : {s.a, s.b})
         {
             const vector ve(s.v + (s.w ^ (e - s.x)));
