@@ -156,6 +156,7 @@ Foam::fiberInteractions::contact::contact
     implicit_(false),
     maxApproach_(0.25),
     hLast_(0),
+    skinNext_(-1),
     periodic_(),
     springs_(),
     records_(),
@@ -222,6 +223,22 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
         );
         cohesion_ = keywordCheck::positive(c, "strength");
         range_ = keywordCheck::positive(c, "range");
+    }
+
+    // A two-dimensional case (empty or wedge patches) holds every fiber in
+    // one plane: two fibers that cross there meet axis to axis, and the
+    // contact's normal (across both axes) points out of that plane
+    if (mesh_.nGeometricD() < 3)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'interactions' (type contact): the case is"
+            << " two-dimensional (" << mesh_.nGeometricD()
+            << " geometric directions: empty or wedge patches).  Its"
+            << " fibers all lie in one plane, where two fibers that cross"
+            << " meet axis to axis and the contact would push them out of"
+            << " the plane the case holds them in.  Fiber contacts need a"
+            << " three-dimensional case (interactions { type none; } here)."
+            << exit(FatalIOError);
     }
 
     Info<< "    Fiber contacts: k_n " << kn_ << " N/m, restitution " << e_
@@ -593,25 +610,39 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
     scalar hMax = GREAT;
     if (implicit_)
     {
-        // Pairs within reach and a skin of half the reach: how fast they
-        // close (adaptive: every interval), growing at most twofold from
-        // one interval to the next, from the contact time at the start
-        // (kept for the interval's interact, at the same time)
+        // Pairs within reach and a skin: how fast they close (adaptive:
+        // every interval), growing at most twofold from one interval to
+        // the next, from the contact time at the start (kept for the
+        // interval's interact, at the same time).  The skin: three times
+        // what the far pairs could close in the last interval (the next
+        // may be twice as long), within a twentieth and a half of the
+        // reach; half the reach at the start.  Where it is thin the search
+        // and the interval limit test fewer pairs; the interval never
+        // lets a far pair close more than the skin
         DynamicList<segment>& segs = near_.segs;
         DynamicList<FixedList<label, 2>>& cand = near_.cand;
         segs.clear();
         cand.clear();
         near_.inReach.clear();
-        near_.skin = 0.5*reach(fibers, roles);
+        const scalar r0 = reach(fibers, roles);
+        near_.skin =
+            skinNext_ < 0 ? 0.5*r0 : min(max(skinNext_, 0.05*r0), 0.5*r0);
         near_.r = gather(fibers, roles, segs, nullptr, near_.skin);
         candidates(segs, near_.r, cand, near_.skin, &near_.inReach);
         near_.valid = true;
+        scalar vFar = 0;
         hMax =
             approachLimit
             (
                 segs, cand, near_.r, near_.skin,
-                min(hLast_ > 0 ? 2*hLast_ : tc, tLeft)
+                min(hLast_ > 0 ? 2*hLast_ : tc, tLeft), vFar
             );
+        const scalar h =
+            hMax < tLeft*(1 - 1e-9)
+          ? tLeft/std::ceil(tLeft/hMax*(1 - 1e-9))
+          : tLeft;
+        skinNext_ = 3*vFar*h;
+        return h;
     }
     else if (tc < GREAT)
     {
@@ -1015,7 +1046,7 @@ void Foam::fiberInteractions::contact::writeRestart(Ostream& os) const
         os  << nl << iter.key() << token::SPACE << iter.val()[0]
             << token::SPACE << iter.val()[1];
     }
-    os << nl << "contactInterval " << hLast_;
+    os << nl << "contactInterval " << hLast_ << token::SPACE << skinNext_;
 }
 
 
@@ -1057,6 +1088,7 @@ void Foam::fiberInteractions::contact::readRestart(Istream& is)
     if (h.isWord() && h.wordToken() == "contactInterval")
     {
         hLast_ = readScalar(is);
+        skinNext_ = readScalar(is);
     }
     else if (h.good())
     {

@@ -387,7 +387,8 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     const UList<FixedList<label, 2>>& cand,
     const scalar r,
     const scalar skin,
-    const scalar hMax
+    const scalar hMax,
+    scalar& vFar
 ) const
 {
     // The candidates; the largest relative speed per distance of the
@@ -398,8 +399,10 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     scalar lambda = 0;
     for (const FixedList<label, 2>& ij : cand)
     {
-        // Both local: the pair once
-        if (!(segs[ij[1]].local >= 0 && ij[1] < ij[0]))
+        // Both local: the pair once (the local segments come first, and
+        // the first of a candidate is local: its partner is local where
+        // it comes before it)
+        if (!(ij[1] < ij[0]))
         {
             h = pairLimit(segs[ij[0]], segs[ij[1]], h, r - skin, lambda);
         }
@@ -429,8 +432,7 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     reduce(vMin, minOp<vector>());
     reduce(vMax, maxOp<vector>());
     reduce(lambda, maxOp<scalar>());
-    const scalar vFar =
-        vMax.x() < vMin.x() ? 0 : min(mag(vMax - vMin), lambda*r);
+    vFar = vMax.x() < vMin.x() ? 0 : min(mag(vMax - vMin), lambda*r);
     if (vFar*h > skin)
     {
         h = skin/vFar;
