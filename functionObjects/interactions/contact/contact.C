@@ -156,6 +156,7 @@ Foam::fiberInteractions::contact::contact
     implicit_(false),
     maxApproach_(0.25),
     hLast_(0),
+    warnedFlexible_(false),
     skinNext_(-1),
     periodic_(),
     springs_(),
@@ -608,6 +609,27 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
     // The longest interval allowed; the rest of the step is split into
     // equal parts no longer than that
     scalar hMax = GREAT;
+    if (implicit_ && !warnedFlexible_)
+    {
+        bool flexible = false;
+        forAll(fibers, fi)
+        {
+            flexible =
+                flexible
+             || (fibers[fi].flexible() && roles[fi] == role::free);
+        }
+        if (returnReduce(flexible, orOp<bool>()))
+        {
+            warnedFlexible_ = true;
+            WarningInFunction
+                << "Implicit contacts with flexible fibers: contacts"
+                << " between two flexible fibers have a known defect (the"
+                << " two sides' impulses need not cancel, and what is paid"
+                << " back can build up and kick the chains; docs/model.md,"
+                << " section 7).  Use implicit off where flexible fibers"
+                << " touch each other and their impulses matter." << endl;
+        }
+    }
     if (implicit_)
     {
         // Pairs within reach and a skin: how fast they close (adaptive:
