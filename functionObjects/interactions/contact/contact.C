@@ -630,6 +630,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
                 << " touch each other and their impulses matter." << endl;
         }
     }
+    scalar vFar = 0;
     if (implicit_)
     {
         // Pairs within reach and a skin: how fast they close (adaptive:
@@ -652,19 +653,12 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
         near_.r = gather(fibers, roles, segs, nullptr, near_.skin);
         candidates(segs, near_.r, cand, near_.skin, &near_.inReach);
         near_.valid = true;
-        scalar vFar = 0;
         hMax =
             approachLimit
             (
                 segs, cand, near_.r, near_.skin,
                 min(hLast_ > 0 ? 2*hLast_ : tc, tLeft), vFar
             );
-        const scalar h =
-            hMax < tLeft*(1 - 1e-9)
-          ? tLeft/std::ceil(tLeft/hMax*(1 - 1e-9))
-          : tLeft;
-        skinNext_ = 3*vFar*h;
-        return h;
     }
     else if (tc < GREAT)
     {
@@ -672,11 +666,15 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
         // the step
         hMax = dt/max(1, label(std::ceil(dt*contactSteps_/tc*(1 - 1e-9))));
     }
-    if (!(hMax < tLeft*(1 - 1e-9)))
+    const scalar h =
+        hMax < tLeft*(1 - 1e-9)
+      ? tLeft/std::ceil(tLeft/hMax*(1 - 1e-9))
+      : tLeft;
+    if (implicit_)
     {
-        return tLeft;
+        skinNext_ = 3*vFar*h;
     }
-    return tLeft/std::ceil(tLeft/hMax*(1 - 1e-9));
+    return h;
 }
 
 
@@ -1110,7 +1108,17 @@ void Foam::fiberInteractions::contact::readRestart(Istream& is)
     if (h.isWord() && h.wordToken() == "contactInterval")
     {
         hLast_ = readScalar(is);
-        skinNext_ = readScalar(is);
+
+        // The skin (written since the skin adapts; older files: none)
+        token s(is);
+        if (s.isNumber())
+        {
+            skinNext_ = s.number();
+        }
+        else if (s.good())
+        {
+            is.putBack(s);
+        }
     }
     else if (h.good())
     {
