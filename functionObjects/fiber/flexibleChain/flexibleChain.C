@@ -14,8 +14,6 @@ License
 #include "fiberHydrodynamics.H"
 #include "mathematicalConstants.H"
 
-#include "eigenBlocks.H"
-
 #include <Eigen/Dense>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -24,247 +22,6 @@ namespace
 {
 
 using namespace Foam;
-
-typedef Eigen::Matrix<double, 9, 9> Matrix9;
-typedef Eigen::Matrix<double, 9, 1> Vector9;
-
-// Block offsets of the unknowns [lambda_{i-1}, V_i, W_i]
-const label iL = 0, iV = 3, iW = 6;
-
-inline void addTo(Matrix9& M, const label r, const label c, const tensor& T)
-{
-    eigenBlocks::addTensor(M, r, c, T);
-}
-
-inline void addTo(Vector9& b, const label r, const vector& v)
-{
-    eigenBlocks::addVector(b, r, v);
-}
-
-
-//- Solve D [X y] = [U b] in place (X over U, y over b) by Gaussian
-//  elimination with partial pivoting; U's columns V are zero (and so are
-//  X's); without U (the last block) b only.  D is overwritten.
-void solveBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
-{
-    // The right-hand side columns that can be non-zero: lambda and W
-    static const label cols[6] = {0, 1, 2, 6, 7, 8};
-    const label nc = withU ? 6 : 0;
-    for (label k = 0; k < 9; ++k)
-    {
-        label p = k;
-        for (label r = k + 1; r < 9; ++r)
-        {
-            if (std::abs(D(r, k)) > std::abs(D(p, k)))
-            {
-                p = r;
-            }
-        }
-        if (p != k)
-        {
-            D.row(k).swap(D.row(p));
-            U.row(k).swap(U.row(p));
-            std::swap(b(k), b(p));
-        }
-        const double inv = 1/D(k, k);
-        for (label r = k + 1; r < 9; ++r)
-        {
-            const double f = D(r, k)*inv;
-            if (f == 0)
-            {
-                continue;
-            }
-            for (label c = k + 1; c < 9; ++c)
-            {
-                D(r, c) -= f*D(k, c);
-            }
-            for (label j = 0; j < nc; ++j)
-            {
-                U(r, cols[j]) -= f*U(k, cols[j]);
-            }
-            b(r) -= f*b(k);
-        }
-    }
-    for (label k = 8; k >= 0; --k)
-    {
-        const double inv = 1/D(k, k);
-        for (label c = k + 1; c < 9; ++c)
-        {
-            const double d = D(k, c);
-            if (d == 0)
-            {
-                continue;
-            }
-            for (label j = 0; j < nc; ++j)
-            {
-                U(k, cols[j]) -= d*U(c, cols[j]);
-            }
-            b(k) -= d*b(c);
-        }
-        for (label j = 0; j < nc; ++j)
-        {
-            U(k, cols[j]) *= inv;
-        }
-        b(k) *= inv;
-    }
-}
-
-
-// The unknowns of a joint block left after V is eliminated: lambda, W
-const label jointCols[6] = {0, 1, 2, 6, 7, 8};
-
-
-//- Rows 0-2 of a joint block read -V + C_ll lambda + C_lW W = b_l: V
-//  substituted into rows 3-8
-void substituteV(Matrix9& D, Vector9& b)
-{
-    for (label r = 3; r < 9; ++r)
-    {
-        for (label v = 0; v < 3; ++v)
-        {
-            const double a = D(r, 3 + v);
-            if (a == 0)
-            {
-                continue;
-            }
-            for (const label c : jointCols)
-            {
-                D(r, c) += a*D(v, c);
-            }
-            b(r) += a*b(v);
-        }
-    }
-}
-
-
-//- Forward elimination with partial pivoting of rows 3-8 over jointCols,
-//  applied to the nc right-hand side columns jointCols of U and to b
-void eliminate6(Matrix9& D, Matrix9& U, Vector9& b, const label nc)
-{
-    for (label k = 0; k < 6; ++k)
-    {
-        const label ck = jointCols[k];
-        label p = 3 + k;
-        for (label r = 4 + k; r < 9; ++r)
-        {
-            if (std::abs(D(r, ck)) > std::abs(D(p, ck)))
-            {
-                p = r;
-            }
-        }
-        if (p != 3 + k)
-        {
-            D.row(3 + k).swap(D.row(p));
-            U.row(3 + k).swap(U.row(p));
-            std::swap(b(3 + k), b(p));
-        }
-        const double inv = 1/D(3 + k, ck);
-        for (label r = 4 + k; r < 9; ++r)
-        {
-            const double f = D(r, ck)*inv;
-            if (f == 0)
-            {
-                continue;
-            }
-            for (label j = k + 1; j < 6; ++j)
-            {
-                D(r, jointCols[j]) -= f*D(3 + k, jointCols[j]);
-            }
-            for (label j = 0; j < nc; ++j)
-            {
-                U(r, jointCols[j]) -= f*U(3 + k, jointCols[j]);
-            }
-            b(r) -= f*b(3 + k);
-        }
-    }
-}
-
-
-//- solveBlock for a block with its joint's constraint rows (U's rows 0-2
-//  are zero): V eliminated first, a 6x6 system in [lambda, W] solved, V
-//  recovered from the constraint rows
-void solveJointBlock(Matrix9& D, Matrix9& U, Vector9& b, const bool withU)
-{
-    const label nc = withU ? 6 : 0;
-    substituteV(D, b);
-    eliminate6(D, U, b, nc);
-
-    // Back substitution: the solution of unknown jointCols[k] (row 3 + k)
-    double xs[6][7];
-    for (label k = 5; k >= 0; --k)
-    {
-        const double inv = 1/D(3 + k, jointCols[k]);
-        for (label j = 0; j <= nc; ++j)
-        {
-            double v = j < nc ? U(3 + k, jointCols[j]) : b(3 + k);
-            for (label m = k + 1; m < 6; ++m)
-            {
-                v -= D(3 + k, jointCols[m])*xs[m][j];
-            }
-            xs[k][j] = v*inv;
-        }
-    }
-
-    // V from the constraint rows; the solution into U and b
-    double xv[3][7];
-    for (label v = 0; v < 3; ++v)
-    {
-        for (label j = 0; j <= nc; ++j)
-        {
-            double s = j < nc ? 0 : -b(v);
-            for (label m = 0; m < 6; ++m)
-            {
-                s += D(v, jointCols[m])*xs[m][j];
-            }
-            xv[v][j] = s;
-        }
-    }
-    for (label j = 0; j <= nc; ++j)
-    {
-        for (label m = 0; m < 6; ++m)
-        {
-            (j < nc ? U(jointCols[m], jointCols[j]) : b(jointCols[m])) =
-                xs[m][j];
-        }
-        for (label v = 0; v < 3; ++v)
-        {
-            (j < nc ? U(3 + v, jointCols[j]) : b(3 + v)) = xv[v][j];
-        }
-    }
-}
-
-
-//- D -= L X and b -= L y, with L's non-zero rows (lambda, W) and columns
-//  (V, W) and X's non-zero columns (lambda, W)
-void subtractProduct
-(
-    const Matrix9& L,
-    const Matrix9& X,
-    const Vector9& y,
-    Matrix9& D,
-    Vector9& b
-)
-{
-    static const label rows[6] = {0, 1, 2, 6, 7, 8};
-    static const label inner[6] = {3, 4, 5, 6, 7, 8};
-    for (const label r : rows)
-    {
-        for (const label k : inner)
-        {
-            const double l = L(r, k);
-            if (l == 0)
-            {
-                continue;
-            }
-            for (const label c : rows)
-            {
-                D(r, c) -= l*X(k, c);
-            }
-            b(r) -= l*y(k);
-        }
-    }
-}
-
 
 //- Joint stiffnesses of Euler-Bernoulli: bending E I/l, twisting G J/l
 inline scalar kBending(const scalar E, const scalar d4, const scalar l)
@@ -282,28 +39,112 @@ inline tensor crossOf(const vector& c)
     return fiberHydrodynamics::crossMatrix(c);
 }
 
+//- crossOf(c) & T, by columns (c x T's columns)
+inline tensor crossTimes(const vector& c, const tensor& T)
+{
+    return tensor
+    (
+        c.y()*T.zx() - c.z()*T.yx(),
+        c.y()*T.zy() - c.z()*T.yy(),
+        c.y()*T.zz() - c.z()*T.yz(),
+        c.z()*T.xx() - c.x()*T.zx(),
+        c.z()*T.xy() - c.x()*T.zy(),
+        c.z()*T.xz() - c.x()*T.zz(),
+        c.x()*T.yx() - c.y()*T.xx(),
+        c.x()*T.yy() - c.y()*T.xy(),
+        c.x()*T.yz() - c.y()*T.xz()
+    );
+}
+
+//- The inverse by cofactors, one division
+inline tensor inverse(const tensor& t)
+{
+    const tensor c
+    (
+        t.yy()*t.zz() - t.zy()*t.yz(),
+        t.xz()*t.zy() - t.xy()*t.zz(),
+        t.xy()*t.yz() - t.xz()*t.yy(),
+        t.zx()*t.yz() - t.yx()*t.zz(),
+        t.xx()*t.zz() - t.xz()*t.zx(),
+        t.yx()*t.xz() - t.xx()*t.yz(),
+        t.yx()*t.zy() - t.yy()*t.zx(),
+        t.xy()*t.zx() - t.xx()*t.zy(),
+        t.xx()*t.yy() - t.yx()*t.xy()
+    );
+    return (1/(t.xx()*c.xx() + t.xy()*c.yx() + t.xz()*c.zx()))*c;
+}
+
 } // End anonymous namespace
 
 
 struct Foam::flexibleChain::blocks
 {
-    //- Diagonal, lower and upper blocks and right-hand sides
-    List<Matrix9> D, L, U;
-    List<Vector9> b;
+    // The system, segment i: [P Q; R S] [V_i; W_i] + [I; Cp_i] lambda_i
+    // - [0; hK_i] W_{i+1} - [I; Cm_{i-1}] lambda_{i-1}
+    // - [0; hK_{i-1}] W_{i-1} = [rV_i; rW_i]; joint j (segments j, j+1):
+    // V_j - Cp_j W_j - V_{j+1} + Cm_j W_{j+1} = gh_j; with Cp_j, Cm_j the
+    // cross-product matrices of the levers c+_j, c-_{j+1}.  The clamp:
+    // -[I; Cm0] lambda_c in segment 0's rows, -V_0 + Cm0 W_0 = ghc
 
-    //- Sized for N segments, zero
-    void reset(const label N)
+        //- Segment blocks (overwritten by the elimination) and rows
+        List<tensor> P, Q, R, S;
+        vectorList rV, rW;
+
+        //- Joints: h K_j, the levers' cross matrices, the right-hand side
+        List<tensor> hK, Cp, Cm;
+        vectorList cp, cm, gh;
+
+        //- The clamp
+        bool clamped;
+        tensor Cm0;
+        vector cm0, ghc;
+
+
+    // The elimination from segment N - 1 on (factor): per segment the
+    // blocks of [P Q; R S]^-1 (Pi = P^-1, PiQ, RPi, Sci the Schur
+    // complement's inverse); per joint j, after segment i = j + 1:
+    // x_i = y_i + Y_j lambda_j + Z_j W_j (VY, WY: Y_j's rows),
+    // lambda_j = Ti_j (gh_j - J- y_i) - Ti_j V_j + Ew_j W_j, and
+    // x_i = p_j + [QVV QVW; QWV QWW]_j x_j
+
+        List<tensor> Pi, PiQ, RPi, Sci, VY, WY, Ti, QVV, QVW, QWV, QWW;
+
+        //- The clamp's force eliminated: x_0 -= Yc Tci (J_c x_0 - ghc)
+        tensor VYc, WYc, Tci;
+
+
+    // A solve (solveRHS)
+
+        //- The solution
+        vectorList V, W;
+
+        //- p_i of the elimination
+        vectorList pV, pW;
+
+
+    //- Sized for N segments
+    void setSize(const label N)
     {
-        D.setSize(N);
-        L.setSize(N);
-        U.setSize(N);
-        b.setSize(N);
-        for (label i = 0; i < N; ++i)
+        const label nJ = max(N - 1, label(0));
+        for (List<tensor>* l : {&P, &Q, &R, &S, &Pi, &PiQ, &RPi, &Sci})
         {
-            D[i].setZero();
-            L[i].setZero();
-            U[i].setZero();
-            b[i].setZero();
+            l->setSize(N);
+        }
+        for
+        (
+            List<tensor>* l
+          : {&hK, &Cp, &Cm, &VY, &WY, &Ti, &QVV, &QVW, &QWV, &QWW}
+        )
+        {
+            l->setSize(nJ);
+        }
+        for (vectorList* l : {&rV, &rW, &V, &W})
+        {
+            l->setSize(N);
+        }
+        for (vectorList* l : {&cp, &cm, &gh, &pV, &pW})
+        {
+            l->setSize(nJ);
         }
     }
 };
@@ -691,25 +532,17 @@ void Foam::flexibleChain::assembleSegment
     blocks& B
 ) const
 {
-    Matrix9& Di = B.D[i];
-    Vector9& bi = B.b[i];
     const tensor I(inertia(i, z_[i]));
 
     // Linear momentum
-    addTo(Di, iV, iV, (m_[i]/h)*tensor::I + ld.A);
-    addTo(Di, iV, iW, ld.B);
-    addTo(bi, iV, (m_[i]/h)*v_[i] + ld.f);
+    B.P[i] = (m_[i]/h)*tensor::I + ld.A;
+    B.Q[i] = ld.B;
+    B.rV[i] = (m_[i]/h)*v_[i] + ld.f;
 
     // Angular momentum
-    addTo(Di, iW, iV, ld.C);
-    addTo(Di, iW, iW, I/h + ld.D);
-    addTo(bi, iW, (I & w_[i])/h - (w_[i] ^ (I & w_[i])) + ld.t);
-
-    if (i == 0 && !clamped_)
-    {
-        // No joint before: lambda_{-1} = 0
-        addTo(Di, iL, iL, tensor::I);
-    }
+    B.R[i] = ld.C;
+    B.S[i] = I/h + ld.D;
+    B.rW[i] = (I & w_[i])/h - (w_[i] ^ (I & w_[i])) + ld.t;
 }
 
 
@@ -723,51 +556,36 @@ void Foam::flexibleChain::assembleJoint
     // The joint before segment i (i = 0: the clamp): its force lambda on
     // segment i at cm (the opposite on segment i - 1 at cp), its
     // constraint row, and its elastic moment, implicit
-    Matrix9& Di = B.D[i];
-    Vector9& bi = B.b[i];
     const vector cm(-0.5*l_[i]*z_[i]);
-    addTo(Di, iV, iL, -tensor::I);
-    addTo(Di, iW, iL, -crossOf(cm));
-    addTo(Di, iL, iV, -tensor::I);
-    addTo(Di, iL, iW, crossOf(cm));
-
     tensor K;
-    vector theta, gap;
+    vector theta;
     if (i > 0)
     {
-        const vector cp(0.5*l_[i - 1]*z_[i - 1]);
-        gap = r_[i - 1] + cp - r_[i] - cm;
-        joint
-        (
-            q_[i - 1], q_[i], z_[i - 1], z_[i], kb_[i - 1], kt_[i - 1], K,
-            theta
-        );
-
-        Matrix9& Li = B.L[i];
-        addTo(Li, iL, iV, tensor::I);
-        addTo(Li, iL, iW, -crossOf(cp));
-        addTo(Li, iW, iW, -h*K);
-
-        Matrix9& Up = B.U[i - 1];
-        Vector9& bp = B.b[i - 1];
-        addTo(Up, iV, iL, tensor::I);
-        addTo(Up, iW, iL, crossOf(cp));
-        addTo(B.D[i - 1], iW, iW, h*K);
-        addTo(Up, iW, iW, -h*K);
-        addTo(bp, iW, K & theta);
+        const label j = i - 1;
+        const vector cp(0.5*l_[j]*z_[j]);
+        joint(q_[j], q_[i], z_[j], z_[i], kb_[j], kt_[j], K, theta);
+        B.Cp[j] = crossOf(cp);
+        B.Cm[j] = crossOf(cm);
+        B.cp[j] = cp;
+        B.cm[j] = cm;
+        B.hK[j] = h*K;
+        B.gh[j] = -(r_[j] + cp - r_[i] - cm)/h;
+        B.S[j] += B.hK[j];
+        B.rW[j] += K & theta;
     }
     else
     {
-        gap = xClamp_ - r_[0] - cm;
         joint
         (
             qClamp_, q_[0], qClamp_.R() & z0_[0], z_[0], clampBending(),
             clampTwisting(), K, theta
         );
+        B.Cm0 = crossOf(cm);
+        B.cm0 = cm;
+        B.ghc = -(xClamp_ - r_[0] - cm)/h;
     }
-    addTo(bi, iL, -gap/h);
-    addTo(Di, iW, iW, h*K);
-    addTo(bi, iW, -(K & theta));
+    B.S[i] += h*K;
+    B.rW[i] -= K & theta;
 }
 
 
@@ -796,32 +614,120 @@ void Foam::flexibleChain::addLinkForces
 }
 
 
-void Foam::flexibleChain::solve(blocks& B) const
+void Foam::flexibleChain::factor(blocks& B) const
 {
-    // Block tridiagonal elimination: X_i = D_i'^-1 U_i,
-    // y_i = D_i'^-1 b_i', D_{i+1}' = D_{i+1} - L_{i+1} X_i, ...; then
-    // x_i = y_i - X_i x_{i+1}
-    const label N = B.D.size();
-    List<Matrix9>& X = B.U;
-    for (label i = 0; i < N; ++i)
+    // Segment by segment from the free end N - 1 (the articulated-body
+    // recursion): the segment's 6x6 block inverted by its 3x3 blocks (the
+    // Schur complement of P), its velocities written in the force and the
+    // angular velocity of the segment before (joint i - 1's), and
+    // eliminated from that segment's rows.  Each block is then the mass,
+    // drag and stiffness of a free chain (no pivoting); the clamp, at
+    // segment 0, comes last.  O(N), 3x3 blocks only
+    const label N = nSegments();
+    B.clamped = clamped_;
+    for (label i = N - 1; i >= 0; --i)
     {
-        if (i > 0)
+        const tensor Pi(inverse(B.P[i]));
+        const tensor PiQ(Pi & B.Q[i]);
+        const tensor RPi(B.R[i] & Pi);
+        const tensor Sci(inverse(B.S[i] - (RPi & B.Q[i])));
+        B.Pi[i] = Pi;
+        B.PiQ[i] = PiQ;
+        B.RPi[i] = RPi;
+        B.Sci[i] = Sci;
+        if (i == 0)
         {
-            subtractProduct(B.L[i], X[i - 1], B.b[i - 1], B.D[i], B.b[i]);
+            // The clamp's force [I; Cm0] lambda_c and its constraint
+            if (clamped_)
+            {
+                B.WYc = Sci & (B.Cm0 - RPi);
+                B.VYc = Pi - (PiQ & B.WYc);
+                B.Tci = inverse(crossTimes(B.cm0, B.WYc) - B.VYc);
+            }
+            break;
         }
-        if (i > 0 || clamped_)
-        {
-            solveJointBlock(B.D[i], X[i], B.b[i], i + 1 < N);
-        }
-        else
-        {
-            solveBlock(B.D[i], X[i], B.b[i], i + 1 < N);
-        }
+
+        // The responses to joint j's force ([I; Cm_j]) and to W_j
+        // ([0; hK_j])
+        const label j = i - 1;
+        const tensor& Cp = B.Cp[j];
+        const tensor& Cm = B.Cm[j];
+        const tensor& hK = B.hK[j];
+        const vector& cp = B.cp[j];
+        const vector& cm = B.cm[j];
+        const tensor WY(Sci & (Cm - RPi));
+        const tensor VY(Pi - (PiQ & WY));
+        const tensor WZ(Sci & hK);
+        const tensor VZ(-(PiQ & WZ));
+
+        // Joint j's constraint: its force in segment j's velocities
+        const tensor Ti(inverse(crossTimes(cm, WY) - VY));
+        const tensor Ew(Ti & (Cp - (crossTimes(cm, WZ) - VZ)));
+        B.VY[j] = VY;
+        B.WY[j] = WY;
+        B.Ti[j] = Ti;
+        B.QVV[j] = -(VY & Ti);
+        B.QVW[j] = (VY & Ew) + VZ;
+        B.QWV[j] = -(WY & Ti);
+        B.QWW[j] = (WY & Ew) + WZ;
+
+        // ... eliminated from segment j's rows
+        B.P[j] -= Ti;
+        B.Q[j] += Ew;
+        B.R[j] -= crossTimes(cp, Ti) + (hK & B.QWV[j]);
+        B.S[j] += crossTimes(cp, Ew) - (hK & B.QWW[j]);
     }
-    List<Vector9>& x = B.b;
-    for (label i = N - 2; i >= 0; --i)
+}
+
+
+void Foam::flexibleChain::solveRHS
+(
+    blocks& B,
+    const vectorList& rV,
+    const vectorList& rW,
+    const vectorList& gh,
+    const vector& ghc
+) const
+{
+    // The factor's recursion on a right-hand side, then back from
+    // segment 0
+    const label N = nSegments();
+    vector a(Zero);
+    for (label i = N - 1; i >= 0; --i)
     {
-        x[i] -= X[i]*x[i + 1];
+        vector rv(rV[i]);
+        vector rw(rW[i]);
+        if (i + 1 < N)
+        {
+            rv -= a;
+            rw += (B.hK[i] & B.pW[i]) - (B.cp[i] ^ a);
+        }
+        vector Wy(B.Sci[i] & (rw - (B.RPi[i] & rv)));
+        vector Vy((B.Pi[i] & rv) - (B.PiQ[i] & Wy));
+        if (i == 0)
+        {
+            if (B.clamped)
+            {
+                const vector lc(B.Tci & (ghc - ((B.cm0 ^ Wy) - Vy)));
+                Vy += B.VYc & lc;
+                Wy += B.WYc & lc;
+            }
+            B.V[0] = Vy;
+            B.W[0] = Wy;
+            break;
+        }
+        const label j = i - 1;
+        a = B.Ti[j] & (gh[j] - ((B.cm[j] ^ Wy) - Vy));
+        B.pV[j] = Vy + (B.VY[j] & a);
+        B.pW[j] = Wy + (B.WY[j] & a);
+    }
+    for (label i = 1; i < N; ++i)
+    {
+        const label j = i - 1;
+        const vector& V0 = B.V[j];
+        const vector& W0 = B.W[j];
+        B.V[i] = B.pV[j] + (B.QVV[j] & V0) + (B.QVW[j] & W0);
+        B.W[i] = B.pW[j] + (B.QWV[j] & V0) + (B.QWW[j] & W0);
     }
 }
 
@@ -837,45 +743,44 @@ void Foam::flexibleChain::solveLinked
     // and U's columns, per link and direction e: e and rA x e in the
     // rows of segment i, -e and -rB x e in those of j (U^T x is the
     // relative velocity of the contact points).  With y = T^-1 b and
-    // Z = T^-1 U: x = y - Z M (I + U^T Z M)^-1 U^T y
+    // Z = T^-1 U: x = y - Z M (I + U^T Z M)^-1 U^T y; T factored once
+    const label N = nSegments();
     const label n = 3*label(links.size());
-    const blocks T(B);
-    solve(B);
+    factor(B);
+    solveRHS(B, B.rV, B.rW, B.gh, B.ghc);
+    const vectorList V0(B.V);
+    const vectorList W0(B.W);
 
     // U^T x, component a (link a/3, direction a%3)
-    auto project = [&links](const List<Vector9>& x, const label a)
+    auto project =
+        [&links](const vectorList& V, const vectorList& W, const label a)
     {
         const fiberIntegrator::link& k = links[a/3];
-        const auto part = [&x](const label s, const vector& r)
-        {
-            const vector V(x[s](iV), x[s](iV + 1), x[s](iV + 2));
-            const vector W(x[s](iW), x[s](iW + 1), x[s](iW + 2));
-            return V + (W ^ r);
-        };
-        return (part(k.i, k.rA) - part(k.j, k.rB)).component(a % 3);
+        return
+        (
+            (V[k.i] + (W[k.i] ^ k.rA)) - (V[k.j] + (W[k.j] ^ k.rB))
+        ).component(a % 3);
     };
 
-    List<List<Vector9>> Z(n);
+    List<vectorList> ZV(n), ZW(n);
     Eigen::MatrixXd S(n, n), M(Eigen::MatrixXd::Zero(n, n));
     Eigen::VectorXd Uy(n);
-    blocks Ba;
+    vectorList uV(N), uW(N), gh0(B.gh.size(), Zero);
     for (label a = 0; a < n; ++a)
     {
         const fiberIntegrator::link& k = links[a/3];
         vector e(Zero);
         e.component(a % 3) = 1;
-        Ba = T;
-        for (Vector9& b : Ba.b)
-        {
-            b.setZero();
-        }
-        addTo(Ba.b[k.i], iV, e);
-        addTo(Ba.b[k.i], iW, k.rA ^ e);
-        addTo(Ba.b[k.j], iV, -e);
-        addTo(Ba.b[k.j], iW, -(k.rB ^ e));
-        solve(Ba);
-        Z[a].transfer(Ba.b);
-        Uy(a) = project(B.b, a);
+        uV = vector::zero;
+        uW = vector::zero;
+        uV[k.i] += e;
+        uW[k.i] += k.rA ^ e;
+        uV[k.j] -= e;
+        uW[k.j] -= k.rB ^ e;
+        solveRHS(B, uV, uW, gh0, Zero);
+        ZV[a] = B.V;
+        ZW[a] = B.W;
+        Uy(a) = project(V0, W0, a);
         const tensor Mk(h*k.K + k.C);
         for (label c = 0; c < 3; ++c)
         {
@@ -886,18 +791,21 @@ void Foam::flexibleChain::solveLinked
     {
         for (label c = 0; c < n; ++c)
         {
-            S(a, c) = project(Z[c], a);
+            S(a, c) = project(ZV[c], ZW[c], a);
         }
     }
     const Eigen::VectorXd coef
     (
         M*(Eigen::MatrixXd::Identity(n, n) + S*M).partialPivLu().solve(Uy)
     );
-    forAll(B.b, i)
+    for (label i = 0; i < N; ++i)
     {
+        B.V[i] = V0[i];
+        B.W[i] = W0[i];
         for (label a = 0; a < n; ++a)
         {
-            B.b[i] -= coef(a)*Z[a][i];
+            B.V[i] -= coef(a)*ZV[a][i];
+            B.W[i] -= coef(a)*ZW[a][i];
         }
     }
 }
@@ -911,7 +819,6 @@ void Foam::flexibleChain::step
     const std::vector<fiberIntegrator::link>* links
 )
 {
-    // Block i: rows and columns [lambda_{i-1}, V_i, W_i]
     const label N = nSegments();
     updateDirections();
     if (!work_)
@@ -919,14 +826,15 @@ void Foam::flexibleChain::step
         work_.reset(new blocks());
     }
     blocks& B = *work_;
-    B.reset(N);
+    B.setSize(N);
+    B.ghc = Zero;
     for (label i = 0; i < N; ++i)
     {
         assembleSegment(i, loads[i], h, B);
-        if (i > 0 || clamped_)
-        {
-            assembleJoint(i, h, B);
-        }
+    }
+    for (label i = clamped_ ? 0 : 1; i < N; ++i)
+    {
+        assembleJoint(i, h, B);
     }
 
     if (links && !links->empty())
@@ -935,19 +843,17 @@ void Foam::flexibleChain::step
     }
     else
     {
-        solve(B);
+        factor(B);
+        solveRHS(B, B.rV, B.rW, B.gh, B.ghc);
     }
-    const List<Vector9>& x = B.b;
 
     // Move
     for (label i = 0; i < N; ++i)
     {
-        const vector V(x[i](iV), x[i](iV + 1), x[i](iV + 2));
-        const vector W(x[i](iW), x[i](iW + 1), x[i](iW + 2));
-        v_[i] = V;
-        w_[i] = W;
-        r_[i] += h*V;
-        q_[i] = normalize(fiber::rotationQuaternion(h*W)*q_[i]);
+        v_[i] = B.V[i];
+        w_[i] = B.W[i];
+        r_[i] += h*B.V[i];
+        q_[i] = normalize(fiber::rotationQuaternion(h*B.W[i])*q_[i]);
     }
     updateDirections();
     closeJoints(keepAngularMomentum);
@@ -1004,7 +910,7 @@ void Foam::flexibleChain::closeJoints(const bool keepAngularMomentum)
         {
             const vector s(r_[i] - xG);
             dL += (r_[i] - r0[i]) ^ (m_[i]*v_[i]);
-            IG += inertia(i) + m_[i]*((s & s)*tensor::I - s*s);
+            IG += inertia(i, z_[i]) + m_[i]*((s & s)*tensor::I - s*s);
         }
         const scalar scale = tr(IG);
         Eigen::Matrix3d A;
