@@ -546,6 +546,59 @@ void testInertia()
 }
 
 
+//- The rotation vector of a unit quaternion against the angle and axis
+//  it was built from, either side of the switch from the series (small
+//  angles) to atan2 at tan(angle/2) = 0.05, and for q and -q
+void testRotationVector()
+{
+    const vector n(vector(0.3, -0.2, 1)/mag(vector(0.3, -0.2, 1)));
+    scalar worst = 0;
+    for
+    (
+        const scalar a
+      : {1e-12, 1e-6, 1e-3, 0.05, 0.0998, 0.1001, 0.3, 1.0, 2.5, 3.1}
+    )
+    {
+        for (const scalar sgn : {1.0, -1.0})
+        {
+            const quaternion q(sgn*std::cos(a/2), sgn*std::sin(a/2)*n);
+            const vector theta(fiber::rotationVectorOf(q));
+            worst = max(worst, mag(theta - a*n)/a);
+        }
+    }
+    check
+    (
+        "fiber.rotationVectorOf.seriesAndAtan2",
+        worst < 1e-15,
+        fmt(worst, 0, worst)
+    );
+
+    // And back: the quaternion of a rotation vector against cos and sin
+    // of the half angle, either side of the series' bound (0.1)
+    scalar worstQ = 0;
+    for
+    (
+        const scalar a
+      : {1e-12, 1e-6, 1e-3, 0.05, 0.0999, 0.1001, 0.3, 1.0, 2.5, 3.1}
+    )
+    {
+        const quaternion q(fiber::rotationQuaternion(a*n));
+        worstQ =
+            max
+            (
+                worstQ,
+                mag(q.w() - std::cos(a/2)) + mag(q.v() - std::sin(a/2)*n)
+            );
+    }
+    check
+    (
+        "fiber.rotationQuaternion.seriesAndTrig",
+        worstQ < 1e-15,
+        fmt(worstQ, 0, worstQ)
+    );
+}
+
+
 void testRelaxation()
 {
     // One segment at rest released in a uniform flow (physics.md 6):
@@ -2154,6 +2207,7 @@ int main()
         testBrethertonTorqueBalance();
         testInertialDrag();
         testInertia();
+        testRotationVector();
         testInertialAuto();
         testViscousSwitch();
         testRelaxation();

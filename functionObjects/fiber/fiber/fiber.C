@@ -450,12 +450,24 @@ Foam::vector Foam::fiber::rotationVectorOf(const quaternion& q)
     const scalar sgn = q.w() < 0 ? -1 : 1;
     const scalar w = sgn*q.w();
     const vector v(sgn*q.v());
-    const scalar s = mag(v);
-    if (s < 1e-8)
+    const scalar s2 = magSqr(v);
+    if (s2 < 0.0025*sqr(w))
     {
-        // 2 atan(s/w)/s by its series
-        return (2/w)*(1 - sqr(s/w)/3)*v;
+        // 2 atan(x)/x v/w, x = |v|/w < 0.05, by its series to x^12 (the
+        // next term, x^14/15, below 4e-20): no root, no atan2
+        const scalar iw = 1/w;
+        const scalar x2 = s2*sqr(iw);
+        return
+            (
+                2*iw
+               *(
+                    1 + x2*(-1./3 + x2*(1./5 + x2*(-1./7 + x2*(1./9
+                  + x2*(-1./11 + x2/13)))))
+                )
+            )
+           *v;
     }
+    const scalar s = std::sqrt(s2);
     return (2*std::atan2(s, w)/s)*v;
 }
 
@@ -487,13 +499,21 @@ void Foam::fiber::moveBy
 
 Foam::quaternion Foam::fiber::rotationQuaternion(const vector& theta)
 {
-    // sin(phi/2)/phi by its Taylor series for small angles
-    const scalar phi = mag(theta);
-    const scalar sinc =
-        phi < 1e-4
-      ? 0.5 - sqr(phi)/48
-      : ::sin(0.5*phi)/phi;
-    return quaternion(::cos(0.5*phi), sinc*theta);
+    // cos(phi/2) and sin(phi/2)/phi; below phi = 0.1 by their series in
+    // y = (phi/2)^2 < 0.0025 to y^4 (the next terms below 3e-20): no root,
+    // no sine or cosine
+    const scalar phi2 = magSqr(theta);
+    if (phi2 < 0.01)
+    {
+        const scalar y = 0.25*phi2;
+        const scalar c =
+            1 - y*(1./2 - y*(1./24 - y*(1./720 - y/40320)));
+        const scalar sinc =
+            0.5*(1 - y*(1./6 - y*(1./120 - y*(1./5040 - y/362880))));
+        return quaternion(c, sinc*theta);
+    }
+    const scalar phi = std::sqrt(phi2);
+    return quaternion(std::cos(0.5*phi), (std::sin(0.5*phi)/phi)*theta);
 }
 
 

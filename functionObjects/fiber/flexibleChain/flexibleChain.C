@@ -363,7 +363,8 @@ void Foam::flexibleChain::joint
     vector& theta
 )
 {
-    theta = qa.transform(fiber::rotationVectorOf(conjugate(qa)*qb));
+    // The rotation from a to b in the world frame, qb qa^-1
+    theta = fiber::rotationVectorOf(qb*conjugate(qa));
 
     // The joint's tangent: the bisector of the two directions
     vector t(za + zb);
