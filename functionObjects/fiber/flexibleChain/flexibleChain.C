@@ -90,6 +90,9 @@ struct Foam::flexibleChain::blocks
         List<tensor> P, Q, R, S;
         vectorList rV, rW;
 
+        //- P and Q as assembled (the momentum balance)
+        List<tensor> P0, Q0;
+
         //- Joints: h K_j, the levers' cross matrices, the right-hand side
         List<tensor> hK, Cp, Cm;
         vectorList cp, cm, gh;
@@ -126,7 +129,11 @@ struct Foam::flexibleChain::blocks
     void setSize(const label N)
     {
         const label nJ = max(N - 1, label(0));
-        for (List<tensor>* l : {&P, &Q, &R, &S, &Pi, &PiQ, &RPi, &Sci})
+        for
+        (
+            List<tensor>* l
+          : {&P, &Q, &R, &S, &P0, &Q0, &Pi, &PiQ, &RPi, &Sci}
+        )
         {
             l->setSize(N);
         }
@@ -538,6 +545,8 @@ void Foam::flexibleChain::assembleSegment
     // Linear momentum
     B.P[i] = (m_[i]/h)*tensor::I + ld.A;
     B.Q[i] = ld.B;
+    B.P0[i] = B.P[i];
+    B.Q0[i] = B.Q[i];
     B.rV[i] = (m_[i]/h)*v_[i] + ld.f;
 
     // Angular momentum
@@ -848,6 +857,26 @@ void Foam::flexibleChain::step
         solveRHS(B, B.rV, B.rW, B.gh, B.ghc);
     }
 
+    // The joint forces cancel in the chain's momentum balance, but the
+    // recursion never forms them: their round-off would change the
+    // momentum.  A uniform velocity (which keeps the joints) takes the
+    // balance's residual out
+    if (!clamped_)
+    {
+        vector d(Zero);
+        tensor Psum(Zero);
+        for (label i = 0; i < N; ++i)
+        {
+            d += (B.P0[i] & B.V[i]) + (B.Q0[i] & B.W[i]) - B.rV[i];
+            Psum += B.P0[i];
+        }
+        const vector u(inverse(Psum) & d);
+        for (label i = 0; i < N; ++i)
+        {
+            B.V[i] -= u;
+        }
+    }
+
     // Move
     for (label i = 0; i < N; ++i)
     {
@@ -922,7 +951,8 @@ void Foam::flexibleChain::closeJoints(const bool keepAngularMomentum)
                 A(r, c) = 0.5*(IG(r, c) + IG(c, r))/scale;
             }
         }
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(A);
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es;
+        es.computeDirect(A);
         const Eigen::Vector3d ev(es.eigenvalues());
         vector dw(Zero);
         for (label k = 0; k < 3; ++k)
