@@ -33,27 +33,73 @@ namespace
 using namespace Foam;
 typedef fiberInteractions::contact::segment segment;
 
-void writeSegment(Ostream& os, const segment& s)
+//- Scalars per segment in a processor's message (packSegment)
+const label nPacked = 45;
+
+//- Segment s into buf from position k on (labels and bools as exact
+//  scalars): one contiguous block per message, not a stream of tokens
+void packSegment(const segment& s, UList<scalar>& buf, label& k)
 {
-    os  << s.fiber << token::SPACE << s.seg << token::SPACE << s.nSeg
-        << token::SPACE << s.a
-        << token::SPACE << s.b << token::SPACE << s.d
-        << token::SPACE << s.zPrev << token::SPACE << s.s0
-        << token::SPACE << s.flexible << token::SPACE << s.x
-        << token::SPACE << s.v << token::SPACE << s.w << token::SPACE << s.m
-        << token::SPACE << s.sX << token::SPACE << s.sTheta
-        << token::SPACE << s.sV << token::SPACE << s.sW
-        << token::SPACE << s.sTau << token::SPACE << s.H
-        << token::SPACE << s.dX << token::SPACE << s.dTheta;
+    const auto put = [&buf, &k](const vector& v)
+    {
+        buf[k++] = v.x();
+        buf[k++] = v.y();
+        buf[k++] = v.z();
+    };
+    buf[k++] = s.fiber;
+    buf[k++] = s.seg;
+    buf[k++] = s.nSeg;
+    put(s.a);
+    put(s.b);
+    buf[k++] = s.d;
+    put(s.zPrev);
+    buf[k++] = s.s0;
+    buf[k++] = s.flexible;
+    put(s.x);
+    put(s.v);
+    put(s.w);
+    buf[k++] = s.m;
+    put(s.sX);
+    put(s.sTheta);
+    put(s.sV);
+    put(s.sW);
+    buf[k++] = s.sTau;
+    buf[k++] = s.H;
+    put(s.dX);
+    put(s.dTheta);
 }
 
 
-void readSegment(Istream& is, segment& s)
+//- The segment packed at position k of buf (another processor's)
+void unpackSegment(const UList<scalar>& buf, label& k, segment& s)
 {
-    is  >> s.fiber >> s.seg >> s.nSeg >> s.a >> s.b >> s.d >> s.zPrev
-        >> s.s0 >> s.flexible >> s.x >> s.v
-        >> s.w >> s.m >> s.sX >> s.sTheta >> s.sV >> s.sW >> s.sTau >> s.H
-        >> s.dX >> s.dTheta;
+    const auto get = [&buf, &k]()
+    {
+        const vector v(buf[k], buf[k + 1], buf[k + 2]);
+        k += 3;
+        return v;
+    };
+    s.fiber = label(buf[k++]);
+    s.seg = label(buf[k++]);
+    s.nSeg = label(buf[k++]);
+    s.a = get();
+    s.b = get();
+    s.d = buf[k++];
+    s.zPrev = get();
+    s.s0 = buf[k++];
+    s.flexible = buf[k++] != 0;
+    s.x = get();
+    s.v = get();
+    s.w = get();
+    s.m = buf[k++];
+    s.sX = get();
+    s.sTheta = get();
+    s.sV = get();
+    s.sW = get();
+    s.sTau = buf[k++];
+    s.H = buf[k++];
+    s.dX = get();
+    s.dTheta = get();
     s.local = -1;
 }
 
@@ -482,33 +528,61 @@ void Foam::fiberInteractions::contact::addGhosts
     {
         return;
     }
+    // Each processor's box of its segments (its own and their images):
+    // another's segment is sent where its box grown by r overlaps it.
+    // (Not the mesh's bounds: polyMesh::bounds() is the whole mesh's in a
+    // parallel run, which sent every segment to every processor.)
     List<boundBox> parts(Pstream::nProcs());
-    parts[Pstream::myProcNo()] = mesh_.bounds();
+    boundBox& own = parts[Pstream::myProcNo()];
+    own = boundBox::invertedBox;
+    for (const segment& s : segs)
+    {
+        own.add(s.a);
+        own.add(s.b);
+    }
     Pstream::gatherList(parts);
     Pstream::scatterList(parts);
 
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    if (!ghostBufs_)
+    {
+        ghostBufs_.reset
+        (
+            new PstreamBuffers(Pstream::commsTypes::nonBlocking)
+        );
+    }
+    PstreamBuffers& pBufs = *ghostBufs_;
+    pBufs.clear();
+    DynamicList<scalar>& buf = ghostSend_;
     for (label proci = 0; proci < Pstream::nProcs(); ++proci)
     {
         if (proci == Pstream::myProcNo())
         {
             continue;
         }
-        DynamicList<label> send;
+        buf.clear();
+        label n = 0, k = 0;
         forAll(segs, i)
         {
             if (parts[proci].overlaps(segmentBox(segs[i], r)))
             {
-                send.append(i);
+                buf.resize(k + nPacked);
+                packSegment(segs[i], buf, k);
+                ++n;
             }
         }
-        UOPstream os(proci, pBufs);
-        os << send.size();
-        for (const label i : send)
+        if (k != nPacked*n)
         {
-            os << token::SPACE;
-            writeSegment(os, segs[i]);
+            FatalErrorInFunction
+                << "Packed " << k << " scalars for " << n << " segments, not "
+                << nPacked << " each" << abort(FatalError);
         }
+        UOPstream os(proci, pBufs);
+        os << n;
+        os.write
+        (
+            reinterpret_cast<const char*>(buf.cdata()),
+            std::streamsize(buf.size()*sizeof(scalar))
+        );
     }
     pBufs.finishedSends();
     for (label proci = 0; proci < Pstream::nProcs(); ++proci)
@@ -519,10 +593,19 @@ void Foam::fiberInteractions::contact::addGhosts
         }
         UIPstream is(proci, pBufs);
         const label n = readLabel(is);
-        for (label k = 0; k < n; ++k)
+        DynamicList<scalar>& rbuf = ghostRecv_;
+        rbuf.resize(nPacked*n);
+        is.read
+        (
+            reinterpret_cast<char*>(rbuf.data()),
+            std::streamsize(rbuf.size()*sizeof(scalar))
+        );
+        segs.reserve(segs.size() + n);
+        label k = 0;
+        for (label j = 0; j < n; ++j)
         {
             segment s;
-            readSegment(is, s);
+            unpackSegment(rbuf, k, s);
             segs.append(s);
         }
     }
