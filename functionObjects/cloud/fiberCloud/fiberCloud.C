@@ -165,6 +165,7 @@ Foam::fiberCloud::fiberCloud
     restarted_(restart != nullptr),
     nSubMax_(0),
     nRemote_(0),
+    nFurther_(0),
     nTransferred_(0),
     nOnward_(0),
     nOutside_(0),
@@ -603,6 +604,7 @@ void Foam::fiberCloud::endStep(const scalar dt)
     }
     nSubMax_ = returnReduce(nSubMax, maxOp<label>());
     nRemote_ = returnReduce(sampler_.nRemote(), sumOp<label>());
+    nFurther_ = returnReduce(sampler_.nFurther(), sumOp<label>());
     nOutside_ = returnReduce(sampler_.nOutside(), sumOp<label>());
     nInertial_ = returnReduce(hydro_.nInertial(), sumOp<label>());
     nInertialSkipped_ = returnReduce(hydro_.nSkipped(), sumOp<label>());

@@ -357,8 +357,13 @@ void Foam::functionObjects::fiberTracking::logStep() const
     }
     if (Pstream::parRun())
     {
-        Log << ", remote segment samples " << cloud_->nRemote()
-            << ", fibers transferred " << cloud_->nTransferred()
+        Log << ", remote segment samples " << cloud_->nRemote();
+        if (cloud_->nFurther())
+        {
+            Log << " (" << cloud_->nFurther() << " of them approximated"
+                << " at a further processor boundary)";
+        }
+        Log << ", fibers transferred " << cloud_->nTransferred()
             << " (" << cloud_->nOnward() << " on into a further part)";
     }
     if (cloud_->hydrodynamics().autoBound() > 0)

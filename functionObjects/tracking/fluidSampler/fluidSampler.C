@@ -78,7 +78,8 @@ Foam::fluidSampler::fluidSampler
     epsilonCellPoint_(nullptr),
     mu_(),
     nRemote_(0),
-    nOutside_(0)
+    nOutside_(0),
+    nFurther_(0)
 {
     // Processor patch addressing is built collectively
     (void)mesh_.globalData();
@@ -242,8 +243,11 @@ void Foam::fluidSampler::answer(Istream& is, fluidSample& s) const
     fiberTracker::hit h = tracker_.track(tp, T.hasR() ? (T.R() & d) : d);
     if (h.where == fiberTracker::stop::processor)
     {
-        // In a third processor's part: the data at the boundary
+        // In a further processor's part (a third one, or back into the
+        // asker's where the boundary is not a plane): the data at the
+        // boundary, counted (the run's log)
         h.where = fiberTracker::stop::outlet;
+        ++nFurther_;
     }
     request dummy;
     sample(tp, h, s, dummy);
