@@ -56,22 +56,10 @@ inline tensor crossTimes(const vector& c, const tensor& T)
     );
 }
 
-//- The inverse by cofactors, one division
+//- The inverse by OpenFOAM's cofactors, with one division
 inline tensor inverse(const tensor& t)
 {
-    const tensor c
-    (
-        t.yy()*t.zz() - t.zy()*t.yz(),
-        t.xz()*t.zy() - t.xy()*t.zz(),
-        t.xy()*t.yz() - t.xz()*t.yy(),
-        t.zx()*t.yz() - t.yx()*t.zz(),
-        t.xx()*t.zz() - t.xz()*t.zx(),
-        t.yx()*t.xz() - t.xx()*t.yz(),
-        t.yx()*t.zy() - t.yy()*t.zx(),
-        t.xy()*t.zx() - t.xx()*t.zy(),
-        t.xx()*t.yy() - t.yx()*t.xy()
-    );
-    return (1/(t.xx()*c.xx() + t.xy()*c.yx() + t.xz()*c.zx()))*c;
+    return (1/det(t))*inv(t, scalar(1));
 }
 
 } // End anonymous namespace
@@ -93,13 +81,13 @@ struct Foam::flexibleChain::blocks
         //- P and Q as assembled (the momentum balance)
         List<tensor> P0, Q0;
 
-        //- Joints: h K_j, the levers' cross matrices, the right-hand side
-        List<tensor> hK, Cp, Cm;
+        //- Joints: h K_j, the levers c+_j and c-_{j+1}, the right-hand
+        //  side
+        List<tensor> hK;
         vectorList cp, cm, gh;
 
         //- The clamp
         bool clamped;
-        tensor Cm0;
         vector cm0, ghc;
 
 
@@ -140,7 +128,7 @@ struct Foam::flexibleChain::blocks
         for
         (
             List<tensor>* l
-          : {&hK, &Cp, &Cm, &VY, &WY, &Ti, &QVV, &QVW, &QWV, &QWW}
+          : {&hK, &VY, &WY, &Ti, &QVV, &QVW, &QWV, &QWW}
         )
         {
             l->setSize(nJ);
@@ -574,8 +562,6 @@ void Foam::flexibleChain::assembleJoint
         const label j = i - 1;
         const vector cp(0.5*l_[j]*z_[j]);
         joint(q_[j], q_[i], z_[j], z_[i], kb_[j], kt_[j], K, theta);
-        B.Cp[j] = crossOf(cp);
-        B.Cm[j] = crossOf(cm);
         B.cp[j] = cp;
         B.cm[j] = cm;
         B.hK[j] = h*K;
@@ -590,7 +576,6 @@ void Foam::flexibleChain::assembleJoint
             qClamp_, q_[0], qClamp_.R() & z0_[0], z_[0], clampBending(),
             clampTwisting(), K, theta
         );
-        B.Cm0 = crossOf(cm);
         B.cm0 = cm;
         B.ghc = -(xClamp_ - r_[0] - cm)/h;
     }
@@ -650,7 +635,7 @@ void Foam::flexibleChain::factor(blocks& B) const
             // The clamp's force [I; Cm0] lambda_c and its constraint
             if (clamped_)
             {
-                B.WYc = Sci & (B.Cm0 - RPi);
+                B.WYc = Sci & (crossOf(B.cm0) - RPi);
                 B.VYc = Pi - (PiQ & B.WYc);
                 B.Tci = inverse(crossTimes(B.cm0, B.WYc) - B.VYc);
             }
@@ -660,19 +645,17 @@ void Foam::flexibleChain::factor(blocks& B) const
         // The responses to joint j's force ([I; Cm_j]) and to W_j
         // ([0; hK_j])
         const label j = i - 1;
-        const tensor& Cp = B.Cp[j];
-        const tensor& Cm = B.Cm[j];
         const tensor& hK = B.hK[j];
         const vector& cp = B.cp[j];
         const vector& cm = B.cm[j];
-        const tensor WY(Sci & (Cm - RPi));
+        const tensor WY(Sci & (crossOf(cm) - RPi));
         const tensor VY(Pi - (PiQ & WY));
         const tensor WZ(Sci & hK);
         const tensor VZ(-(PiQ & WZ));
 
         // Joint j's constraint: its force in segment j's velocities
         const tensor Ti(inverse(crossTimes(cm, WY) - VY));
-        const tensor Ew(Ti & (Cp - (crossTimes(cm, WZ) - VZ)));
+        const tensor Ew(Ti & (crossOf(cp) - (crossTimes(cm, WZ) - VZ)));
         B.VY[j] = VY;
         B.WY[j] = WY;
         B.Ti[j] = Ti;
