@@ -165,6 +165,7 @@ Foam::fiberCloud::fiberCloud
     restarted_(restart != nullptr),
     nSubMax_(0),
     nRemote_(0),
+    nForwarded_(0),
     nFurther_(0),
     nTransferred_(0),
     nOnward_(0),
@@ -604,6 +605,7 @@ void Foam::fiberCloud::endStep(const scalar dt)
     }
     nSubMax_ = returnReduce(nSubMax, maxOp<label>());
     nRemote_ = returnReduce(sampler_.nRemote(), sumOp<label>());
+    nForwarded_ = returnReduce(sampler_.nForwarded(), sumOp<label>());
     nFurther_ = returnReduce(sampler_.nFurther(), sumOp<label>());
     nOutside_ = returnReduce(sampler_.nOutside(), sumOp<label>());
     nInertial_ = returnReduce(hydro_.nInertial(), sumOp<label>());

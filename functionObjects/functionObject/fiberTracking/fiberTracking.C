@@ -358,6 +358,11 @@ void Foam::functionObjects::fiberTracking::logStep() const
     if (Pstream::parRun())
     {
         Log << ", remote segment samples " << cloud_->nRemote();
+        if (cloud_->nForwarded())
+        {
+            Log << " (" << cloud_->nForwarded() << " forwarded into a"
+                << " further part)";
+        }
         if (cloud_->nFurther())
         {
             Log << " (" << cloud_->nFurther() << " of them approximated"

@@ -28,14 +28,15 @@ template<class Type>
 autoPtr<interpolation<Type>> interpolator
 (
     const word& scheme,
-    const GeometricField<Type, fvPatchField, volMesh>& psi
+    const GeometricField<Type, fvPatchField, volMesh>& psi,
+    const coupledPointValues& coupled
 )
 {
     if (scheme == interpolationCellPoint<Type>::typeName)
     {
         return autoPtr<interpolation<Type>>
         (
-            new fluidSampler::cellPoint<Type>(psi)
+            new fluidSampler::cellPoint<Type>(psi, coupled)
         );
     }
     return interpolation<Type>::New(scheme, psi);
@@ -68,6 +69,7 @@ Foam::fluidSampler::fluidSampler
     tracker_(tracker),
     neighbours_(neighbours),
     scheme_(scheme),
+    coupled_(mesh),
     UInterp_(),
     gradUInterp_(),
     kInterp_(),
@@ -79,6 +81,7 @@ Foam::fluidSampler::fluidSampler
     mu_(),
     nRemote_(0),
     nOutside_(0),
+    nForwarded_(0),
     nFurther_(0)
 {
     // Processor patch addressing is built collectively
@@ -143,13 +146,13 @@ void Foam::fluidSampler::update
     const volScalarField* epsilonPtr
 )
 {
-    UInterp_ = interpolator(scheme_, U);
-    gradUInterp_ = interpolator(scheme_, gradU);
+    UInterp_ = interpolator(scheme_, U, coupled_);
+    gradUInterp_ = interpolator(scheme_, gradU, coupled_);
     mu_ = muCells;
     if (kPtr && epsilonPtr)
     {
-        kInterp_ = interpolator(scheme_, *kPtr);
-        epsilonInterp_ = interpolator(scheme_, *epsilonPtr);
+        kInterp_ = interpolator(scheme_, *kPtr, coupled_);
+        epsilonInterp_ = interpolator(scheme_, *epsilonPtr, coupled_);
     }
     else
     {
@@ -227,32 +230,47 @@ void Foam::fluidSampler::toStartFrame
 }
 
 
-void Foam::fluidSampler::answer(Istream& is, fluidSample& s) const
+bool Foam::fluidSampler::answer
+(
+    Istream& is,
+    fluidSample& s,
+    request& onward,
+    fiberTracker::hit& h,
+    vectorTensorTransform& T
+) const
 {
     label patch, face;
     point p;
     vector d;
     is >> patch >> face >> p >> d;
     const processorPolyPatch& pp = tracker_.processorPatch(patch);
-    const vectorTensorTransform T(fiberTracker::receiving(pp, face));
+    T = fiberTracker::receiving(pp, face);
 
     // The point on the face, reached from the cell behind it (it may stop
     // on the face by round-off), then on along the line
     trackedPoint tp;
     tracker_.locate(T.transformPosition(p), tp, pp.faceCells()[face]);
-    fiberTracker::hit h = tracker_.track(tp, T.hasR() ? (T.R() & d) : d);
-    if (h.where == fiberTracker::stop::processor)
+    h = tracker_.track(tp, T.hasR() ? (T.R() & d) : d);
+    const bool further = (h.where == fiberTracker::stop::processor);
+    if (further)
     {
-        // In a further processor's part (a third one, or back into the
-        // asker's where the boundary is not a plane): the data at the
-        // boundary, counted (the run's log)
-        h.where = fiberTracker::stop::outlet;
-        ++nFurther_;
+        // On into a further processor's part (a third one, or back into
+        // the asker's where the boundary is not a plane): a request to
+        // that processor, as sample() makes it; meanwhile the data at the
+        // boundary, used only if the request cannot go on
+        sample(tp, h, s, onward);
+        interpolate(tp, s);
+        s.inside = false;
+        toStartFrame(h, s);
     }
-    request dummy;
-    sample(tp, h, s, dummy);
+    else
+    {
+        request dummy;
+        sample(tp, h, s, dummy);
+    }
     fiberTracker::hit back{h.where, -1, Zero, true, T, false};
     toStartFrame(back, s);
+    return !further;
 }
 
 
@@ -260,6 +278,17 @@ void Foam::fluidSampler::exchange
 (
     const UList<request>& reqs,
     UList<fluidSample>& answers
+) const
+{
+    exchange(reqs, answers, 0);
+}
+
+
+void Foam::fluidSampler::exchange
+(
+    const UList<request>& reqs,
+    UList<fluidSample>& answers,
+    const label depth
 ) const
 {
     const label nProcs = Pstream::nProcs();
@@ -289,8 +318,15 @@ void Foam::fluidSampler::exchange
     neighbours_.exchange();
 
     // Answer: locate the point from the cell behind the patch face, in
-    // this processor's frame (processorCyclic: transformed), and send the
-    // data back in the asker's frame
+    // this processor's frame (processorCyclic: transformed), and go on
+    // along the line.  Every request is read before any goes on: the
+    // buffers serve that exchange too.
+    List<List<fluidSample>> result(nProcs);
+    boolList asked(nProcs, false);
+    DynamicList<request> onward;
+    DynamicList<labelPair> onwardFor;
+    DynamicList<fiberTracker::hit> onwardHit;
+    DynamicList<vectorTensorTransform> onwardT;
     for (const label proci : neighbours_.neighbours())
     {
         if (!neighbours_.received(proci))
@@ -300,13 +336,64 @@ void Foam::fluidSampler::exchange
         autoPtr<UIPstream> isPtr(neighbours_.recvStream(proci));
         UIPstream& is = isPtr();
         const label n = readLabel(is);
-        List<fluidSample> result(n);
+        asked[proci] = true;
+        result[proci].setSize(n);
         for (label k = 0; k < n; ++k)
         {
-            answer(is, result[k]);
+            request r;
+            fiberTracker::hit h;
+            vectorTensorTransform T;
+            if (!answer(is, result[proci][k], r, h, T))
+            {
+                onward.append(r);
+                onwardFor.append(labelPair(proci, k));
+                onwardHit.append(h);
+                onwardT.append(T);
+            }
         }
-        nRemote_ += n;
-        neighbours_.sendStream(proci)() << result;
+        if (depth == 0)
+        {
+            nRemote_ += n;
+        }
+    }
+
+    // Lines that went on into a further processor's part are sampled
+    // there (every processor takes part while any has such a line).  The
+    // answer comes in the frame the line reached here; it is brought back
+    // into the asker's.
+    if (returnReduce(onward.size() > 0, orOp<bool>()))
+    {
+        if (depth < maxDepth_)
+        {
+            List<fluidSample> further(onward.size());
+            exchange(onward, further, depth + 1);
+            forAll(onward, j)
+            {
+                fluidSample& s =
+                    result[onwardFor[j].first()][onwardFor[j].second()];
+                s = further[j];
+                toStartFrame(onwardHit[j], s);
+                const fiberTracker::hit back
+                {
+                    onwardHit[j].where, -1, Zero, true, onwardT[j], false
+                };
+                toStartFrame(back, s);
+            }
+            nForwarded_ += onward.size();
+        }
+        else
+        {
+            // Kept: the data at the boundary (counted)
+            nFurther_ += onward.size();
+        }
+    }
+
+    for (const label proci : neighbours_.neighbours())
+    {
+        if (asked[proci])
+        {
+            neighbours_.sendStream(proci)() << result[proci];
+        }
     }
     neighbours_.exchange();
 
@@ -317,10 +404,10 @@ void Foam::fluidSampler::exchange
             continue;
         }
         autoPtr<UIPstream> isPtr(neighbours_.recvStream(proci));
-        const List<fluidSample> result(isPtr());
-        forAll(result, k)
+        const List<fluidSample> got(isPtr());
+        forAll(got, k)
         {
-            answers[index[proci][k]] = result[k];
+            answers[index[proci][k]] = got[k];
         }
     }
 }
