@@ -67,6 +67,35 @@ public:
     }
 };
 
+
+// The coupled patches of a field evaluated: their values the neighbour
+// cells' (a field read from disk holds what decomposePar wrote there; a
+// solver evaluates them within its step)
+void evaluateCoupled(Foam::volVectorField& f)
+{
+    using namespace Foam;
+    volVectorField::Boundary& bf = f.boundaryFieldRef();
+    const label nReq = Pstream::nRequests();
+    forAll(bf, patchi)
+    {
+        if (bf[patchi].coupled())
+        {
+            bf[patchi].initEvaluate(Pstream::commsTypes::nonBlocking);
+        }
+    }
+    if (Pstream::parRun())
+    {
+        Pstream::waitRequests(nReq);
+    }
+    forAll(bf, patchi)
+    {
+        if (bf[patchi].coupled())
+        {
+            bf[patchi].evaluate(Pstream::commsTypes::nonBlocking);
+        }
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -279,7 +308,18 @@ Foam::functionObjects::fiberTracking::turbulenceField
 void Foam::functionObjects::fiberTracking::updateFields()
 {
     const volVectorField& U = lookupObject<volVectorField>(UName_);
-    gradU_ = fvc::grad(U);
+    if (functionObject::postProcess)
+    {
+        // Read from disk: processorCyclic patches hold what decomposePar
+        // wrote, not the neighbour cells' values (docs/model.md D8)
+        volVectorField Uc(U);
+        evaluateCoupled(Uc);
+        gradU_ = fvc::grad(Uc);
+    }
+    else
+    {
+        gradU_ = fvc::grad(U);
+    }
 
     if (cloud_->dispersion().active() && kFromModel_)
     {
