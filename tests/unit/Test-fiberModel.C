@@ -547,8 +547,9 @@ void testInertia()
 
 
 //- The rotation vector of a unit quaternion against the angle and axis
-//  it was built from, either side of the switch from the series (small
-//  angles) to atan2 at tan(angle/2) = 0.05, and for q and -q
+//  it was built from, either side of the switches of the series' length
+//  (tan(angle/2) = 1e-3 and 1e-2) and from the series (small angles) to
+//  atan2 at tan(angle/2) = 0.05, and for q and -q
 void testRotationVector()
 {
     const vector n(vector(0.3, -0.2, 1)/mag(vector(0.3, -0.2, 1)));
@@ -556,7 +557,10 @@ void testRotationVector()
     for
     (
         const scalar a
-      : {1e-12, 1e-6, 1e-3, 0.05, 0.0998, 0.1001, 0.3, 1.0, 2.5, 3.1}
+      : {
+            1e-12, 1e-6, 1e-3, 1.999e-3, 2.001e-3, 0.01999, 0.02001, 0.05,
+            0.0998, 0.1001, 0.3, 1.0, 2.5, 3.1
+        }
     )
     {
         for (const scalar sgn : {1.0, -1.0})

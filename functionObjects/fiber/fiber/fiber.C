@@ -453,19 +453,17 @@ Foam::vector Foam::fiber::rotationVectorOf(const quaternion& q)
     const scalar s2 = magSqr(v);
     if (s2 < 0.0025*sqr(w))
     {
-        // 2 atan(x)/x v/w, x = |v|/w < 0.05, by its series to x^12 (the
-        // next term, x^14/15, below 4e-20): no root, no atan2
+        // 2 atan(x)/x v/w, x = |v|/w < 0.05, by its series: no root, no
+        // atan2; to x^4 below x = 1e-3, to x^6 below 1e-2, else to x^12
+        // (the next terms, x^6/7, x^8/9 and x^14/15, below 2e-17)
         const scalar iw = 1/w;
         const scalar x2 = s2*sqr(iw);
-        return
-            (
-                2*iw
-               *(
-                    1 + x2*(-1./3 + x2*(1./5 + x2*(-1./7 + x2*(1./9
-                  + x2*(-1./11 + x2/13)))))
-                )
-            )
-           *v;
+        const scalar f =
+            x2 < 1e-6 ? 1 + x2*(-1./3 + x2/5)
+          : x2 < 1e-4 ? 1 + x2*(-1./3 + x2*(1./5 - x2/7))
+          : 1 + x2*(-1./3 + x2*(1./5 + x2*(-1./7 + x2*(1./9
+              + x2*(-1./11 + x2/13)))));
+        return (2*iw*f)*v;
     }
     const scalar s = std::sqrt(s2);
     return (2*std::atan2(s, w)/s)*v;

@@ -94,11 +94,11 @@ struct Foam::flexibleChain::blocks
     // The elimination from segment N - 1 on (factor): per segment the
     // blocks of [P Q; R S]^-1 (Pi = P^-1, PiQ, RPi, Sci the Schur
     // complement's inverse); per joint j, after segment i = j + 1:
-    // x_i = y_i + Y_j lambda_j + Z_j W_j (VY, WY: Y_j's rows),
-    // lambda_j = Ti_j (gh_j - J- y_i) - Ti_j V_j + Ew_j W_j, and
-    // x_i = p_j + [QVV QVW; QWV QWW]_j x_j
+    // x_i = y_i + Y_j lambda_j + Z_j W_j (VY, WY, VZ, WZ: the rows of
+    // Y_j and Z_j), lambda_j = Ti_j (gh_j - J- y_i) - Ti_j V_j + Ew_j W_j,
+    // so x_i = p_j + Y_j (Ew_j W_j - Ti_j V_j) + Z_j W_j
 
-        List<tensor> Pi, PiQ, RPi, Sci, VY, WY, Ti, QVV, QVW, QWV, QWW;
+        List<tensor> Pi, PiQ, RPi, Sci, VY, WY, VZ, WZ, Ti, Ew;
 
         //- The clamp's force eliminated: x_0 -= Yc Tci (J_c x_0 - ghc)
         tensor VYc, WYc, Tci;
@@ -128,7 +128,7 @@ struct Foam::flexibleChain::blocks
         for
         (
             List<tensor>* l
-          : {&hK, &VY, &WY, &Ti, &QVV, &QVW, &QWV, &QWW}
+          : {&hK, &VY, &WY, &VZ, &WZ, &Ti, &Ew}
         )
         {
             l->setSize(nJ);
@@ -658,17 +658,18 @@ void Foam::flexibleChain::factor(blocks& B) const
         const tensor Ew(Ti & (crossOf(cp) - (crossTimes(cm, WZ) - VZ)));
         B.VY[j] = VY;
         B.WY[j] = WY;
+        B.VZ[j] = VZ;
+        B.WZ[j] = WZ;
         B.Ti[j] = Ti;
-        B.QVV[j] = -(VY & Ti);
-        B.QVW[j] = (VY & Ew) + VZ;
-        B.QWV[j] = -(WY & Ti);
-        B.QWW[j] = (WY & Ew) + WZ;
+        B.Ew[j] = Ew;
 
-        // ... eliminated from segment j's rows
+        // ... eliminated from segment j's rows: W_i = pW_j + WY_j (Ew W_j
+        // - Ti V_j) + WZ_j W_j in its moments c+ x lambda_j - hK W_i
+        const tensor X(crossOf(cp) - (hK & WY));
         B.P[j] -= Ti;
         B.Q[j] += Ew;
-        B.R[j] -= crossTimes(cp, Ti) + (hK & B.QWV[j]);
-        B.S[j] += crossTimes(cp, Ew) - (hK & B.QWW[j]);
+        B.R[j] -= X & Ti;
+        B.S[j] += (X & Ew) - (hK & WZ);
     }
 }
 
@@ -717,10 +718,10 @@ void Foam::flexibleChain::solveRHS
     for (label i = 1; i < N; ++i)
     {
         const label j = i - 1;
-        const vector& V0 = B.V[j];
         const vector& W0 = B.W[j];
-        B.V[i] = B.pV[j] + (B.QVV[j] & V0) + (B.QVW[j] & W0);
-        B.W[i] = B.pW[j] + (B.QWV[j] & V0) + (B.QWW[j] & W0);
+        const vector u((B.Ew[j] & W0) - (B.Ti[j] & B.V[j]));
+        B.V[i] = B.pV[j] + (B.VY[j] & u) + (B.VZ[j] & W0);
+        B.W[i] = B.pW[j] + (B.WY[j] & u) + (B.WZ[j] & W0);
     }
 }
 
