@@ -547,9 +547,10 @@ void testInertia()
 
 
 //- The rotation vector of a unit quaternion against the angle and axis
-//  it was built from, either side of the switches of the series' length
-//  (tan(angle/2) = 1e-3 and 1e-2) and from the series (small angles) to
-//  atan2 at tan(angle/2) = 0.05, and for q and -q
+//  it was built from, either side of the switches between the series
+//  (sin(angle/2) = 1e-3 and 1e-2: asin's, to s^4 and to s^6; atan's) and
+//  from the series (small angles) to atan2 at tan(angle/2) = 0.05, and for
+//  q and -q
 void testRotationVector()
 {
     const vector n(vector(0.3, -0.2, 1)/mag(vector(0.3, -0.2, 1)));

@@ -431,6 +431,8 @@ void Foam::fiber::setFlexibleState
     const vector& omega,
     const vectorList& s0,
     const List<quaternion>& Q,
+    const vectorList& z0,
+    const symmTensor& I0,
     const vectorList& vSeg,
     const vectorList& wSeg,
     const scalar h
@@ -440,33 +442,12 @@ void Foam::fiber::setFlexibleState
     moveBy(x - x_, R() & rotationVectorOf(conjugate(q_)*q), v, omega, h);
     x_ = x;
     q_ = q;
-    setShape(s0, Q, vSeg, wSeg);
-}
-
-
-Foam::vector Foam::fiber::rotationVectorOf(const quaternion& q)
-{
-    // q and -q are the same rotation: the angle in [0, pi]
-    const scalar sgn = q.w() < 0 ? -1 : 1;
-    const scalar w = sgn*q.w();
-    const vector v(sgn*q.v());
-    const scalar s2 = magSqr(v);
-    if (s2 < 0.0025*sqr(w))
-    {
-        // 2 atan(x)/x v/w, x = |v|/w < 0.05, by its series: no root, no
-        // atan2; to x^4 below x = 1e-3, to x^6 below 1e-2, else to x^12
-        // (the next terms, x^6/7, x^8/9 and x^14/15, below 2e-17)
-        const scalar iw = 1/w;
-        const scalar x2 = s2*sqr(iw);
-        const scalar f =
-            x2 < 1e-6 ? 1 + x2*(-1./3 + x2/5)
-          : x2 < 1e-4 ? 1 + x2*(-1./3 + x2*(1./5 - x2/7))
-          : 1 + x2*(-1./3 + x2*(1./5 + x2*(-1./7 + x2*(1./9
-              + x2*(-1./11 + x2/13)))));
-        return (2*iw*f)*v;
-    }
-    const scalar s = std::sqrt(s2);
-    return (2*std::atan2(s, w)/s)*v;
+    s0_ = s0;
+    Q_ = Q;
+    z0_ = z0;
+    I0_ = I0;
+    vSeg_ = vSeg;
+    wSeg_ = wSeg;
 }
 
 
@@ -505,9 +486,9 @@ Foam::quaternion Foam::fiber::rotationQuaternion(const vector& theta)
     {
         const scalar y = 0.25*phi2;
         const scalar c =
-            1 - y*(1./2 - y*(1./24 - y*(1./720 - y/40320)));
+            1 - y*(1./2 - y*(1./24 - y*(1./720 - y*(1./40320))));
         const scalar sinc =
-            0.5*(1 - y*(1./6 - y*(1./120 - y*(1./5040 - y/362880))));
+            0.5*(1 - y*(1./6 - y*(1./120 - y*(1./5040 - y*(1./362880)))));
         return quaternion(c, sinc*theta);
     }
     const scalar phi = std::sqrt(phi2);

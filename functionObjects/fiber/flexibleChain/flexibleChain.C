@@ -78,9 +78,6 @@ struct Foam::flexibleChain::blocks
         List<tensor> P, Q, R, S;
         vectorList rV, rW;
 
-        //- P and Q as assembled (the momentum balance)
-        List<tensor> P0, Q0;
-
         //- Joints: h K_j, the levers c+_j and c-_{j+1}, the right-hand
         //  side
         List<tensor> hK;
@@ -96,7 +93,8 @@ struct Foam::flexibleChain::blocks
     // complement's inverse); per joint j, after segment i = j + 1:
     // x_i = y_i + Y_j lambda_j + Z_j W_j (VY, WY, VZ, WZ: the rows of
     // Y_j and Z_j), lambda_j = Ti_j (gh_j - J- y_i) - Ti_j V_j + Ew_j W_j,
-    // so x_i = p_j + Y_j (Ew_j W_j - Ti_j V_j) + Z_j W_j
+    // so x_i = y_i + Y_j (a_j + Ew_j W_j - Ti_j V_j) + Z_j W_j with
+    // a_j = Ti_j (gh_j - J- y_i)
 
         List<tensor> Pi, PiQ, RPi, Sci, VY, WY, VZ, WZ, Ti, Ew;
 
@@ -109,8 +107,9 @@ struct Foam::flexibleChain::blocks
         //- The solution
         vectorList V, W;
 
-        //- p_i of the elimination
-        vectorList pV, pW;
+        //- Per joint j of the elimination: y_i and Ti_j (gh_j - J- y_i)
+        //  of segment i = j + 1
+        vectorList yV, yW, ya;
 
 
     //- Sized for N segments
@@ -120,7 +119,7 @@ struct Foam::flexibleChain::blocks
         for
         (
             List<tensor>* l
-          : {&P, &Q, &R, &S, &P0, &Q0, &Pi, &PiQ, &RPi, &Sci}
+          : {&P, &Q, &R, &S, &Pi, &PiQ, &RPi, &Sci}
         )
         {
             l->setSize(N);
@@ -137,7 +136,7 @@ struct Foam::flexibleChain::blocks
         {
             l->setSize(N);
         }
-        for (vectorList* l : {&cp, &cm, &gh, &pV, &pW})
+        for (vectorList* l : {&cp, &cm, &gh, &yV, &yW, &ya})
         {
             l->setSize(nJ);
         }
@@ -167,9 +166,15 @@ Foam::flexibleChain::flexibleChain
 :
     E_(E),
     G_(G),
+    geometryOf_(nullptr),
+    geometryId_(-1),
+    zCurrent_(false),
     clamped_(false),
     xClamp_(Zero),
-    qClamp_(quaternion::I)
+    qClamp_(quaternion::I),
+    xG_(Zero),
+    IG_(Zero),
+    IGCurrent_(false)
 {
     checkConnected(f);
     geometry(f);
@@ -189,9 +194,15 @@ Foam::flexibleChain::flexibleChain()
 :
     E_(0),
     G_(0),
+    geometryOf_(nullptr),
+    geometryId_(-1),
+    zCurrent_(false),
     clamped_(false),
     xClamp_(Zero),
-    qClamp_(quaternion::I)
+    qClamp_(quaternion::I),
+    xG_(Zero),
+    IG_(Zero),
+    IGCurrent_(false)
 {}
 
 
@@ -361,12 +372,19 @@ void Foam::flexibleChain::joint
     // The rotation from a to b in the world frame, qb qa^-1
     theta = fiber::rotationVectorOf(qb*conjugate(qa));
 
-    // The joint's tangent: the bisector of the two directions
+    // The joint's tangent t: the bisector of the two directions;
+    // K = kb (I - t t) + kt t t
     vector t(za + zb);
-    const scalar mt = mag(t);
-    t = mt > 1e-12 ? t/mt : za;
-    const tensor tt(t*t);
-    K = kb*(tensor::I - tt) + kt*tt;
+    scalar t2 = magSqr(t);
+    if (t2 < 1e-24)
+    {
+        t = za;
+        t2 = 1;
+    }
+    K = ((kt - kb)/t2)*(t*t);
+    K.xx() += kb;
+    K.yy() += kb;
+    K.zz() += kb;
 }
 
 
@@ -400,10 +418,21 @@ void Foam::flexibleChain::checkConnected(const fiber& f)
 
 void Foam::flexibleChain::assign(const fiber& f)
 {
+    // The geometry of the fiber of the last call is kept (a fiber's
+    // sub-steps follow each other)
+    const bool same =
+        geometryOf_ == &f && geometryId_ == f.id()
+     && l_.size() == f.nSegments()
+     && E_ == f.youngsModulus() && G_ == f.shearModulus();
     E_ = f.youngsModulus();
     G_ = f.shearModulus();
     clamped_ = false;
-    geometry(f);
+    if (!same)
+    {
+        geometry(f);
+        geometryOf_ = &f;
+        geometryId_ = f.id();
+    }
     stateFrom(f);
 }
 
@@ -414,13 +443,17 @@ void Foam::flexibleChain::stateFrom(const fiber& f)
     const tensor R(f.R());
     const quaternion q(R);
     const bool flex = f.flexible();
+    z_.setSize(l_.size());
     forAll(l_, i)
     {
+        // (unit quaternions: their product is one to round-off)
         r_[i] = f.position() + (R & f.bodyOffset(i));
-        q_[i] = flex ? normalize(q*f.segmentRotation(i)) : q;
+        q_[i] = flex ? q*f.segmentRotation(i) : q;
+        z_[i] = R & f.bodyDirection(i);
         v_[i] = f.segmentVelocity(R, i);
         w_[i] = f.segmentOmega(i);
     }
+    zCurrent_ = true;
 }
 
 
@@ -507,6 +540,7 @@ void Foam::flexibleChain::set
     q_[i] = normalize(q);
     v_[i] = v;
     w_[i] = w;
+    zCurrent_ = false;
 }
 
 
@@ -531,11 +565,11 @@ void Foam::flexibleChain::assembleSegment
     const tensor I(inertia(i, z_[i]));
 
     // Linear momentum
-    B.P[i] = (m_[i]/h)*tensor::I + ld.A;
+    const scalar ih = 1/h;
+    const scalar mh = m_[i]*ih;
+    B.P[i] = mh*tensor::I + ld.A;
     B.Q[i] = ld.B;
-    B.P0[i] = B.P[i];
-    B.Q0[i] = B.Q[i];
-    B.rV[i] = (m_[i]/h)*v_[i] + ld.f;
+    B.rV[i] = mh*v_[i] + ld.f;
 
     // Angular momentum
     B.R[i] = ld.C;
@@ -565,7 +599,7 @@ void Foam::flexibleChain::assembleJoint
         B.cp[j] = cp;
         B.cm[j] = cm;
         B.hK[j] = h*K;
-        B.gh[j] = -(r_[j] + cp - r_[i] - cm)/h;
+        B.gh[j] = (r_[i] + cm - r_[j] - cp)*(1/h);
         B.S[j] += B.hK[j];
         B.rW[j] += K & theta;
     }
@@ -577,7 +611,7 @@ void Foam::flexibleChain::assembleJoint
             clampTwisting(), K, theta
         );
         B.cm0 = cm;
-        B.ghc = -(xClamp_ - r_[0] - cm)/h;
+        B.ghc = (r_[0] + cm - xClamp_)*(1/h);
     }
     B.S[i] += h*K;
     B.rW[i] -= K & theta;
@@ -663,8 +697,9 @@ void Foam::flexibleChain::factor(blocks& B) const
         B.Ti[j] = Ti;
         B.Ew[j] = Ew;
 
-        // ... eliminated from segment j's rows: W_i = pW_j + WY_j (Ew W_j
-        // - Ti V_j) + WZ_j W_j in its moments c+ x lambda_j - hK W_i
+        // ... eliminated from segment j's rows: W_i = yW_j + WY_j (a_j
+        // + Ew W_j - Ti V_j) + WZ_j W_j in its moments c+ x lambda_j
+        // - hK W_i
         const tensor X(crossOf(cp) - (hK & WY));
         B.P[j] -= Ti;
         B.Q[j] += Ew;
@@ -686,7 +721,7 @@ void Foam::flexibleChain::solveRHS
     // The factor's recursion on a right-hand side, then back from
     // segment 0
     const label N = nSegments();
-    vector a(Zero);
+    vector a(Zero), pW(Zero);
     for (label i = N - 1; i >= 0; --i)
     {
         vector rv(rV[i]);
@@ -694,7 +729,7 @@ void Foam::flexibleChain::solveRHS
         if (i + 1 < N)
         {
             rv -= a;
-            rw += (B.hK[i] & B.pW[i]) - (B.cp[i] ^ a);
+            rw += (B.hK[i] & pW) - (B.cp[i] ^ a);
         }
         vector Wy(B.Sci[i] & (rw - (B.RPi[i] & rv)));
         vector Vy((B.Pi[i] & rv) - (B.PiQ[i] & Wy));
@@ -712,16 +747,19 @@ void Foam::flexibleChain::solveRHS
         }
         const label j = i - 1;
         a = B.Ti[j] & (gh[j] - ((B.cm[j] ^ Wy) - Vy));
-        B.pV[j] = Vy + (B.VY[j] & a);
-        B.pW[j] = Wy + (B.WY[j] & a);
+        pW = Wy + (B.WY[j] & a);
+        B.yV[j] = Vy;
+        B.yW[j] = Wy;
+        B.ya[j] = a;
     }
     for (label i = 1; i < N; ++i)
     {
+        // x_i = y_i + Y_j (a_j + Ew_j W_j - Ti_j V_j) + Z_j W_j
         const label j = i - 1;
         const vector& W0 = B.W[j];
-        const vector u((B.Ew[j] & W0) - (B.Ti[j] & B.V[j]));
-        B.V[i] = B.pV[j] + (B.VY[j] & u) + (B.VZ[j] & W0);
-        B.W[i] = B.pW[j] + (B.WY[j] & u) + (B.WZ[j] & W0);
+        const vector u(B.ya[j] + (B.Ew[j] & W0) - (B.Ti[j] & B.V[j]));
+        B.V[i] = B.yV[j] + (B.VY[j] & u) + (B.VZ[j] & W0);
+        B.W[i] = B.yW[j] + (B.WY[j] & u) + (B.WZ[j] & W0);
     }
 }
 
@@ -814,7 +852,11 @@ void Foam::flexibleChain::step
 )
 {
     const label N = nSegments();
-    updateDirections();
+    if (!zCurrent_)
+    {
+        updateDirections();
+    }
+    IGCurrent_ = false;
     if (!work_)
     {
         work_.reset(new blocks());
@@ -849,10 +891,17 @@ void Foam::flexibleChain::step
     {
         vector d(Zero);
         tensor Psum(Zero);
+        const scalar ih = 1/h;
         for (label i = 0; i < N; ++i)
         {
-            d += (B.P0[i] & B.V[i]) + (B.Q0[i] & B.W[i]) - B.rV[i];
-            Psum += B.P0[i];
+            // The momentum rows as assembled: (m/h + A) V + B W = rV
+            const segmentLoad& ld = loads[i];
+            const scalar mh = m_[i]*ih;
+            d += mh*B.V[i] + (ld.A & B.V[i]) + (ld.B & B.W[i]) - B.rV[i];
+            Psum += ld.A;
+            Psum.xx() += mh;
+            Psum.yy() += mh;
+            Psum.zz() += mh;
         }
         const vector u(inverse(Psum) & d);
         for (label i = 0; i < N; ++i)
@@ -879,8 +928,12 @@ void Foam::flexibleChain::updateDirections()
     z_.setSize(q_.size());
     forAll(q_, i)
     {
-        z_[i] = q_[i].R() & z0_[i];
+        // v + 2 w (u x v) + 2 u x (u x v) of q = (w, u)
+        const vector& u = q_[i].v();
+        const vector t(2*(u ^ z0_[i]));
+        z_[i] = z0_[i] + q_[i].w()*t + (u ^ t);
     }
+    zCurrent_ = true;
 }
 
 
@@ -891,23 +944,37 @@ void Foam::flexibleChain::closeJoints(const bool keepAngularMomentum)
     // turned) to close them, the centre of mass (or the clamp) held
     const label N = nSegments();
     const point xG(clamped_ ? point(Zero) : centreOfMass());
-    vectorList& r0 = r0_;
-    r0 = r_;
     if (clamped_)
     {
         r_[0] = xClamp_ + 0.5*l_[0]*z_[0];
     }
+
+    // Segment j + 1 placed at the end of j; along: the new centre of mass
+    // and the angular momentum the moves change, sum dr x m v (with the
+    // shift below, the same for all segments: shift x P)
+    scalar m = m_[0];
+    point mr(m_[0]*r_[0]);
+    vector P(m_[0]*v_[0]);
+    vector dL(Zero);
     for (label j = 0; j + 1 < N; ++j)
     {
-        r_[j + 1] = r_[j] + 0.5*l_[j]*z_[j] + 0.5*l_[j + 1]*z_[j + 1];
+        const label i = j + 1;
+        const point r(r_[j] + 0.5*l_[j]*z_[j] + 0.5*l_[i]*z_[i]);
+        const vector mv(m_[i]*v_[i]);
+        dL += (r - r_[i]) ^ mv;
+        r_[i] = r;
+        m += m_[i];
+        mr += m_[i]*r;
+        P += mv;
     }
     if (!clamped_)
     {
-        const vector shift(xG - centreOfMass());
+        const vector shift(xG - mr/m);
         for (point& r : r_)
         {
             r += shift;
         }
+        dL += shift ^ P;
     }
     if (!clamped_ && keepAngularMomentum)
     {
@@ -918,14 +985,17 @@ void Foam::flexibleChain::closeJoints(const bool keepAngularMomentum)
         // inertia, leaving out the axis of a nearly straight chain (whose
         // inertia is the cross-section's), the inertia scaled to order
         // one (OpenFOAM's eigen solver has absolute tolerances)
-        vector dL(Zero);
         tensor IG(Zero);
+        Ii_.setSize(N);
         forAll(r_, i)
         {
             const vector s(r_[i] - xG);
-            dL += (r_[i] - r0[i]) ^ (m_[i]*v_[i]);
-            IG += inertia(i, z_[i]) + m_[i]*((s & s)*tensor::I - s*s);
+            Ii_[i] = inertia(i, z_[i]);
+            IG += Ii_[i] + m_[i]*((s & s)*tensor::I - s*s);
         }
+        IG_ = IG;
+        xG_ = xG;
+        IGCurrent_ = true;
         const scalar scale = tr(IG);
         Eigen::Matrix3d A;
         for (label r = 0; r < 3; ++r)
@@ -962,35 +1032,48 @@ void Foam::flexibleChain::writeBack(fiber& f, const scalar h) const
     // The fiber's frame: the centre of mass and the middle segment's
     // rotation; its velocities: those of the rigid motion with the
     // chain's momentum and angular momentum about the centre of mass
+    // (after step(): the directions z_ are current, and the inertia
+    // about the centre of mass is closeJoints()' where it formed it)
     const label N = nSegments();
-    const point xG(centreOfMass());
+    const point xG(IGCurrent_ ? xG_ : centreOfMass());
     scalar m = 0;
     vector P(Zero), LG(Zero);
-    tensor IG(Zero);
+    tensor IG(IGCurrent_ ? IG_ : tensor::zero);
     for (label i = 0; i < N; ++i)
     {
         const vector s(r_[i] - xG);
-        const tensor Ii(inertia(i));
+        const tensor Ii(IGCurrent_ ? Ii_[i] : inertia(i, z_[i]));
         m += m_[i];
         P += m_[i]*v_[i];
         LG += (s ^ (m_[i]*v_[i])) + (Ii & w_[i]);
-        IG += Ii + m_[i]*((s & s)*tensor::I - s*s);
+        if (!IGCurrent_)
+        {
+            IG += Ii + m_[i]*((s & s)*tensor::I - s*s);
+        }
     }
     const quaternion q(q_[N/2]);
-    const tensor RT(q.R().T());
+    const tensor R(q.R());
+    const tensor RT(R.T());
     const quaternion qc(conjugate(q));
     vectorList& s0 = s0Back_;
     List<quaternion>& Q = QBack_;
+    vectorList& z0 = z0Back_;
     s0.setSize(N);
     Q.setSize(N);
+    z0.setSize(N);
     for (label i = 0; i < N; ++i)
     {
+        // (unit quaternions: their product is one to round-off)
         s0[i] = RT & (r_[i] - xG);
-        Q[i] = normalize(qc*q_[i]);
+        Q[i] = qc*q_[i];
+        z0[i] = RT & z_[i];
     }
+    const tensor I0(RT & IG & R);
     f.setFlexibleState
     (
-        xG, q, P/m, inv(IG) & LG, s0, Q, v_, w_, h
+        xG, q, P/m, inv(IG) & LG, s0, Q, z0,
+        symmTensor(I0.xx(), I0.xy(), I0.xz(), I0.yy(), I0.yz(), I0.zz()),
+        v_, w_, h
     );
 }
 
