@@ -1068,12 +1068,9 @@ void Foam::flexibleChain::writeBack(fiber& f, const scalar h) const
         Q[i] = qc*q_[i];
         z0[i] = RT & z_[i];
     }
-    const tensor I0(RT & IG & R);
     f.setFlexibleState
     (
-        xG, q, P/m, inv(IG) & LG, s0, Q, z0,
-        symmTensor(I0.xx(), I0.xy(), I0.xz(), I0.yy(), I0.yz(), I0.zz()),
-        v_, w_, h
+        xG, q, P/m, inv(IG) & LG, s0, Q, z0, symm(RT & IG & R), v_, w_, h
     );
 }
 

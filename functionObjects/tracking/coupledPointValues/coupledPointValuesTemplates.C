@@ -41,21 +41,24 @@ void Foam::coupledPointValues::correct
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
     const surfaceScalarField& magSf = mesh_.magSf();
 
-    // Patch points: on a non-coupled, non-empty patch on any processor
-    // (volPointInterpolation's test; cyclicAMI counts as coupled)
+    // A non-coupled, non-empty patch (volPointInterpolation's test;
+    // cyclicAMI counts as coupled)
+    auto proper = [&](const label patchi)
+    {
+        return
+            !isA<emptyPolyPatch>(pbm[patchi])
+         && !magSf.boundaryField()[patchi].coupled();
+    };
+
+    // Patch points: on such a patch on any processor
     boolList onPatch(meshPoints.size(), false);
     forAll(pbm, patchi)
     {
-        const polyPatch& pp = pbm[patchi];
-        if
-        (
-            isA<emptyPolyPatch>(pp)
-         || magSf.boundaryField()[patchi].coupled()
-        )
+        if (!proper(patchi))
         {
             continue;
         }
-        for (const face& f : pp)
+        for (const face& f : pbm[patchi])
         {
             for (const label pointi : f)
             {
@@ -87,17 +90,13 @@ void Foam::coupledPointValues::correct
                     continue;
                 }
                 const label patchi = pbm.whichPatch(facei);
-                const polyPatch& pp = pbm[patchi];
-                if
-                (
-                    isA<emptyPolyPatch>(pp)
-                 || magSf.boundaryField()[patchi].coupled()
-                )
+                if (!proper(patchi))
                 {
                     continue;
                 }
+                const label patchFacei = facei - pbm[patchi].start();
                 const scalar w = 1.0/mag(points[pointi] - Cf[facei]);
-                sum[i] += w*vf.boundaryField()[patchi][facei - pp.start()];
+                sum[i] += w*vf.boundaryField()[patchi][patchFacei];
                 weight[i] += w;
             }
         }

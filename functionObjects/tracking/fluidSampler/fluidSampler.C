@@ -213,6 +213,20 @@ bool Foam::fluidSampler::sample
 }
 
 
+void Foam::fluidSampler::toAskerFrame
+(
+    const vectorTensorTransform& T,
+    fluidSample& s
+)
+{
+    const fiberTracker::hit back
+    {
+        fiberTracker::stop::none, -1, Zero, true, T, false
+    };
+    toStartFrame(back, s);
+}
+
+
 void Foam::fluidSampler::toStartFrame
 (
     const fiberTracker::hit& h,
@@ -268,8 +282,7 @@ bool Foam::fluidSampler::answer
         request dummy;
         sample(tp, h, s, dummy);
     }
-    fiberTracker::hit back{h.where, -1, Zero, true, T, false};
-    toStartFrame(back, s);
+    toAskerFrame(T, s);
     return !further;
 }
 
@@ -373,11 +386,7 @@ void Foam::fluidSampler::exchange
                     result[onwardFor[j].first()][onwardFor[j].second()];
                 s = further[j];
                 toStartFrame(onwardHit[j], s);
-                const fiberTracker::hit back
-                {
-                    onwardHit[j].where, -1, Zero, true, onwardT[j], false
-                };
-                toStartFrame(back, s);
+                toAskerFrame(onwardT[j], s);
             }
             nForwarded_ += onward.size();
         }
