@@ -162,6 +162,7 @@ Foam::fiberCloud::fiberCloud
     dt_(0),
     tStopLeft_(0),
     tCommon_(0),
+    inIntervals_(false),
     restarted_(restart != nullptr),
     nSubMax_(0),
     nRemote_(0),
@@ -174,6 +175,9 @@ Foam::fiberCloud::fiberCloud
     nInertialSkipped_(0),
     nSegmentSteps_(0),
     nIntervals_(0),
+    nWindows_(0),
+    nEngaged_(0),
+    nInWindows_(0),
     cpuInteractions_(0),
     nRejected_(0),
     nSentStep_(0),
@@ -399,48 +403,117 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
         followMesh();
     }
 
-    // The intervals of the interaction model: at the end of each, every
-    // fiber of every processor is at the same time and the fibers act on
-    // each other ('none': one interval, no call)
+    // The windows and intervals of the interaction model: at a window's
+    // start the model says which fibers could meet a partner in it
+    // (engaged); the others run through the window on their own first.
+    // At the end of each interval of the window every engaged fiber of
+    // every processor is at the same time and they act on each other
+    // ('none': one window, one interval, no call)
     const bool active = interactions_->active();
     scalar tLeft = dt;
     while (true)
     {
-        tCommon_ = tLeft;
-        scalar h = tLeft;
+        // The window, and the fibers that run through it without stops
+        scalar tWindow = 0;
+        bool anyEngaged = true;
         if (active)
         {
+            tCommon_ = tLeft;
+            List<bool> engaged(fibers_.size(), true);
             const std::clock_t c0 = std::clock();
-            h = interactions_->nextInterval(fibers_, roles(), dt, tLeft);
+            const scalar H =
+                interactions_->nextWindow
+                (
+                    fibers_, roles(true), flows(), dt, tLeft, engaged
+                );
             cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
-        }
-        tStopLeft_ = h < tLeft ? tLeft - h : 0;
-
-        // The fibers that reach into the interval run in it; one a feed
-        // releases after its end (less time left) waits
-        for (stepState& st : step_)
-        {
-            if (st.st == status::done || st.st == status::running)
+            tWindow = H < tLeft ? tLeft - H : 0;
+            label nEngaged = 0;
+            label nFree = 0;
+            forAll(step_, fi)
             {
+                stepState& st = step_[fi];
+                st.engaged = engaged[fi];
+                if (st.st == status::gone || fixedSet_[fibers_[fi].setIndex()])
+                {
+                    continue;
+                }
+                ++nFree;
+                if (st.engaged)
+                {
+                    ++nEngaged;
+                }
+                else
+                {
+                    st.load = fiberIntegrator::load();
+                }
                 st.st =
-                    st.tLeft > tStopLeft_ ? status::running : status::done;
+                    !st.engaged && st.tLeft > tWindow
+                  ? status::running
+                  : status::done;
             }
+            reduce(nEngaged, sumOp<label>());
+            reduce(nFree, sumOp<label>());
+            anyEngaged = nEngaged > 0;
+            nEngaged_ += nEngaged;
+            nInWindows_ += nFree;
+            ++nWindows_;
+            inIntervals_ = false;
+            advance(tWindow);
         }
-        if (active)
+
+        // The intervals of the window
+        inIntervals_ = active;
+        scalar tl = tLeft;
+        while (true)
         {
-            interact(tEnd_ - tLeft, tLeft - tStopLeft_);
+            tCommon_ = tl;
+            scalar h = tl - tWindow;
+            if (active && anyEngaged)
+            {
+                const std::clock_t c0 = std::clock();
+                h = interactions_->nextInterval(fibers_, roles(), dt, h);
+                cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
+            }
+            tStopLeft_ = h < tl - tWindow ? tl - h : tWindow;
+
+            // The engaged fibers that reach into the interval run in it;
+            // one a feed releases after its end (less time left) waits
+            forAll(step_, fi)
+            {
+                stepState& st = step_[fi];
+                if
+                (
+                    (st.st == status::done || st.st == status::running)
+                 && (st.engaged || !active)
+                )
+                {
+                    st.st =
+                        st.tLeft > tStopLeft_ ? status::running : status::done;
+                }
+            }
+            if (active)
+            {
+                interact(tEnd_ - tl, tl - tStopLeft_);
+            }
+            advance(tStopLeft_);
+            if (active)
+            {
+                tCommon_ = tStopLeft_;
+                settle();
+            }
+            if (!(tStopLeft_ > tWindow))
+            {
+                break;
+            }
+            tl = tStopLeft_;
         }
-        advance(tStopLeft_);
-        if (active)
-        {
-            tCommon_ = tStopLeft_;
-            settle();
-        }
-        if (!(tStopLeft_ > 0))
+        inIntervals_ = false;
+        if (!(tWindow > 0))
         {
             break;
         }
-        tLeft = tStopLeft_;
+        tLeft = tWindow;
     }
 
     endStep(dt);
@@ -473,9 +546,13 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
     // Every fiber's state in the step; a release at the step's end up to
     // round-off takes no sub-step, a fixed fiber none
     const label nF = fibers_.size();
+    const label nPrev = min(nOld, step_.size());
     step_.setSize(nF);
     for (label fi = 0; fi < nF; ++fi)
     {
+        // Whether it took part in the intervals of the last window (a
+        // fiber released in this step: as if it had)
+        const bool engaged = fi < nPrev ? step_[fi].engaged : true;
         scalar tLeft = dt;
         if (fi >= nOld)
         {
@@ -489,7 +566,7 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
             stepState
             {
                 tLeft > 0 ? status::running : status::done,
-                tLeft, 0, 1, -1, -1, -1, fiberIntegrator::load()
+                tLeft, 0, 1, -1, -1, -1, fiberIntegrator::load(), engaged
             };
     }
     counters_.beginStep();
@@ -500,17 +577,104 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
 }
 
 
-Foam::List<Foam::fiberInteraction::role> Foam::fiberCloud::roles() const
+Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
+{
+    // At each fiber's centre (where its location is, on this processor):
+    // the fluid's mean velocity and its gradient, the fluctuation the
+    // random walk may add (the present eddy's or a new one's); the times
+    // in which the drag brings the fiber to the fluid's velocity, from the
+    // viscous resistance across (the larger) and along the segments
+    // (tauHi) and with the inertial drag at the largest slip added
+    // (tauLo); gravity less buoyancy
+    const fiberTracker::hit here
+    {
+        fiberTracker::stop::none, -1, Zero, false, vectorTensorTransform::I,
+        false
+    };
+    List<fiberInteraction::flow> fl(fibers_.size());
+    forAll(fibers_, fi)
+    {
+        fiberInteraction::flow& fw = fl[fi];
+        fw =
+            fiberInteraction::flow
+            {
+                Zero, Zero, 0, GREAT, GREAT, 0, false, step_[fi].engaged
+            };
+        const fiber& f = fibers_[fi];
+        if (step_[fi].st == status::gone || !f.location().located())
+        {
+            continue;
+        }
+        fluidSample s;
+        fluidSampler::request req;
+        if (!sampler_.sample(f.location(), here, s, req))
+        {
+            continue;
+        }
+        fw.U = s.U;
+        fw.G = s.G;
+        fw.slack = dispersion_->fluctuationBound(f, s);
+        const scalar slip =
+            mag(f.velocity() - s.U) + 0.5*mag(f.omega())*f.length()
+          + fw.slack;
+        scalar kLo = 0;
+        scalar kHi = 0;
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            if (hydro_.viscous())
+            {
+                kLo += s.mu*min(f.kAx(i), f.kAp(i));
+                kHi += s.mu*max(f.kAx(i), f.kAp(i));
+            }
+            if (hydro_.inertial())
+            {
+                kHi +=
+                    0.5*hydro_.rho()*hydro_.CD()*f.segmentDiameter(i)
+                   *f.segmentLength(i)*slip;
+            }
+        }
+        fw.tauLo = kHi > 0 ? f.mass()/kHi : GREAT;
+        fw.tauHi = kLo > 0 ? f.mass()/kLo : GREAT;
+        fw.g =
+            mag
+            (
+                buoyancy_
+              ? (1 - hydro_.rho()/f.segmentDensity(0))*g_
+              : g_
+            );
+        if (step_[fi].tLeft < tCommon_ - 1e-9*dt_)
+        {
+            // Released later in the window: it rests where the feed puts
+            // it until then, while its neighbours move on, so that it
+            // moves against the flow at up to its own speed (and its path
+            // is no straight line from the window's start)
+            fw.slack += max(mag(fw.U), mag(f.velocity()));
+            fw.tauLo = 0;
+            fw.later = true;
+        }
+    }
+    return fl;
+}
+
+
+Foam::List<Foam::fiberInteraction::role> Foam::fiberCloud::roles
+(
+    const bool window
+) const
 {
     typedef fiberInteraction::role role;
     List<role> r(fibers_.size());
     forAll(fibers_, fi)
     {
-        // A fiber a feed releases later in the step is not there yet
+        // A fiber a feed releases later in the step is not there yet (at
+        // a window's start: it will be, where the feed puts it); in a
+        // window's intervals a fiber not engaged is not there either
         r[fi] =
             step_[fi].st == status::gone ? role::absent
           : fixedSet_[fibers_[fi].setIndex()] ? role::fixed
+          : window ? role::free
           : step_[fi].tLeft < tCommon_ - 1e-9*dt_ ? role::absent
+          : inIntervals_ && !step_[fi].engaged ? role::absent
           : role::free;
     }
     return r;

@@ -376,6 +376,15 @@ void Foam::functionObjects::fiberTracking::advance
 void Foam::functionObjects::fiberTracking::logStep() const
 {
     const subStepStatistics& st = cloud_->stepStatistics();
+
+    // Contacts: the pairs found touching at a window's start with a fiber
+    // that had run through the last window on its own (collective)
+    const fiberInteractions::contact* cm =
+        dynamic_cast<const fiberInteractions::contact*>
+        (
+            &cloud_->interactions()
+        );
+    const label nMissed = cm ? cm->missedContacts() : 0;
     const string bound
     (
         subStepStatistics::name(st.hMinLimit(), cloud_->control().ruleName())
@@ -393,7 +402,10 @@ void Foam::functionObjects::fiberTracking::logStep() const
     if (cloud_->interactions().active())
     {
         Log << ", interactions: " << cloud_->nIntervals()
-            << " intervals, CPU time " << cloud_->cpuInteractions() << " s";
+            << " intervals in " << cloud_->nWindows() << " windows ("
+            << cloud_->engagedFraction() << " of the fibers in them, "
+            << nMissed << " contacts missed), CPU time "
+            << cloud_->cpuInteractions() << " s";
     }
     if (Pstream::parRun())
     {

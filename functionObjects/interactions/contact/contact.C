@@ -164,7 +164,9 @@ Foam::fiberInteractions::contact::contact
     pending_(),
     pairs_(),
     touching_(),
-    nCollisions_(0)
+    nCollisions_(0),
+    denseFraction_(0),
+    nMissed_(0)
 {
     read(dict);
     findPeriodic();
@@ -681,6 +683,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
 void Foam::fiberInteractions::contact::payBack
 (
     const PtrList<fiber>& fibers,
+    const UList<role>& roles,
     const scalar h,
     UList<fiberIntegrator::load>& loads
 )
@@ -691,6 +694,10 @@ void Foam::fiberInteractions::contact::payBack
     }
     forAll(fibers, fi)
     {
+        if (roles[fi] == role::absent)
+        {
+            continue;
+        }
         const fiber& f = fibers[fi];
         const tensor R(f.R());
         for (label i = -1; i < (f.flexible() ? f.nSegments() : 0); ++i)
@@ -718,9 +725,9 @@ void Foam::fiberInteractions::contact::payBack
                 s.F += F;
                 s.M += (c ^ F) + (*it)[1]/h;
             }
+            pending_.erase(FixedList<label, 2>{f.id(), i});
         }
     }
-    pending_.clear();
 }
 
 
@@ -818,7 +825,7 @@ void Foam::fiberInteractions::contact::interact
         }
     }
     applyLoads(fibers, parts, loads);
-    payBack(fibers, h, loads);
+    payBack(fibers, roles, h, loads);
     springs_.transfer(next);
     if (sliding_.size())
     {
