@@ -195,7 +195,11 @@ Foam::fiberCloud::fiberCloud
     control_.report(Info);
     calcCellLength();
 
-    const dictionary& injectionDict = dict.subDict("injection");
+    const dictionary& injectionDict =
+        keywordCheck::subDict
+        (
+            dict, "injection", "{ setName { type mesh; nFibers 100; ... } }"
+        );
 
     PtrList<fiber> all;
     List<fiberInjection::origin> origins;

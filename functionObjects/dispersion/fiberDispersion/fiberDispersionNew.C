@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberDispersion.H"
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * * //
 
@@ -36,6 +37,7 @@ Foam::autoPtr<Foam::fiberDispersion> Foam::fiberDispersion::New
         ) << exit(FatalIOError);
     }
 
+    keywordCheck::optionalSubDict(dict, modelType + "Coeffs", "{ ... }");
     return autoPtr<fiberDispersion>
     (
         cstrIter()(dict.subOrEmptyDict(modelType + "Coeffs"))

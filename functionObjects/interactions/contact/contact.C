@@ -215,9 +215,14 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
     }
     implicit_ = dict.getOrDefault<Switch>("implicit", false);
     maxApproach_ = keywordCheck::positive(dict, "maxApproach", 0.25);
-    if (dict.found("cohesion"))
+    const dictionary* cohesionDict =
+        keywordCheck::optionalSubDict
+        (
+            dict, "cohesion", "{ strength 1e-6; range 2e-6; }"
+        );
+    if (cohesionDict)
     {
-        const dictionary& c = dict.subDict("cohesion");
+        const dictionary& c = *cohesionDict;
         keywordCheck::warnUnknown
         (
             c,

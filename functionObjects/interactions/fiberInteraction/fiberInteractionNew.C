@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberInteraction.H"
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * * //
 
@@ -20,6 +21,10 @@ Foam::autoPtr<Foam::fiberInteraction> Foam::fiberInteraction::New
     const polyMesh& mesh
 )
 {
+    keywordCheck::optionalSubDict
+    (
+        dict, "interactions", "{ type contact; stiffness 0.1; ... }"
+    );
     const dictionary& iDict = dict.subOrEmptyDict("interactions");
     const word modelType(iDict.getOrDefault<word>("type", "none"));
 

@@ -145,4 +145,51 @@ Foam::label Foam::keywordCheck::seed(const dictionary& dict)
 }
 
 
+const Foam::dictionary* Foam::keywordCheck::optionalSubDict
+(
+    const dictionary& dict,
+    const word& key,
+    const string& example
+)
+{
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    if (!e)
+    {
+        return nullptr;
+    }
+    if (!e->isDict())
+    {
+        // Not primitiveEntry::dict(), which aborts with a stack trace
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' must be a sub-dictionary, "
+            << key << ' ' << example.c_str() << ", not a value ("
+            << key;
+        for (const token& t : e->stream())
+        {
+            FatalIOError << ' ' << t;
+        }
+        FatalIOError << ";)" << exit(FatalIOError);
+    }
+    return &e->dict();
+}
+
+
+const Foam::dictionary& Foam::keywordCheck::subDict
+(
+    const dictionary& dict,
+    const word& key,
+    const string& example
+)
+{
+    const dictionary* d = optionalSubDict(dict, key, example);
+    if (!d)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' is missing: a sub-dictionary "
+            << key << ' ' << example.c_str() << exit(FatalIOError);
+    }
+    return *d;
+}
+
+
 // ************************************************************************* //
