@@ -13,6 +13,10 @@ License
 #include "fiberCloud.H"
 #include "keywordCheck.H"
 #include "processorPolyPatch.H"
+#include "wallPolyPatch.H"
+#include "symmetryPolyPatch.H"
+#include "symmetryPlanePolyPatch.H"
+#include "patchWave.H"
 #include "Switch.H"
 #include "mathematicalConstants.H"
 
@@ -149,6 +153,8 @@ Foam::fiberCloud::fiberCloud
     neighbours_(mesh),
     sampler_(mesh, tracker_, neighbours_, checkedScheme(dict)),
     constraint_(mesh),
+    wallClearance_(),
+    wallClearanceIndex_(-1),
     counters_(tracker_.outletPatches(), mesh.boundaryMesh().size()),
     interactions_(fiberInteraction::New(dict, mesh)),
     fixedSet_(),
@@ -355,6 +361,44 @@ void Foam::fiberCloud::makeFlexible(fiber& f) const
     {
         flexibleChain::checkConnected(f);
         f.makeFlexible(E, setG_[f.setIndex()]);
+    }
+}
+
+
+void Foam::fiberCloud::calcWallClearance() const
+{
+    wallClearanceIndex_ = mesh_.time().timeIndex();
+    wallClearance_.setSize(mesh_.nCells(), GREAT);
+    labelHashSet ids;
+    forAll(mesh_.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        if
+        (
+            isA<wallPolyPatch>(pp) || isA<symmetryPolyPatch>(pp)
+         || isA<symmetryPlanePolyPatch>(pp)
+        )
+        {
+            ids.insert(patchi);
+        }
+    }
+    if (ids.empty())
+    {
+        return;
+    }
+    const patchWave wave(mesh_, ids, true);
+    const scalarField& y = wave.distance();
+    const pointField& pts = mesh_.points();
+    const vectorField& C = mesh_.cellCentres();
+    const labelListList& cellPts = mesh_.cellPoints();
+    forAll(wallClearance_, celli)
+    {
+        scalar r = 0;
+        for (const label pointi : cellPts[celli])
+        {
+            r = max(r, mag(pts[pointi] - C[celli]));
+        }
+        wallClearance_[celli] = y[celli] - r;
     }
 }
 
@@ -595,6 +639,16 @@ Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
         fiberTracker::stop::none, -1, Zero, false, vectorTensorTransform::I,
         false
     };
+    // The gap to the walls and symmetry planes, where a fiber rebounds:
+    // its centre's cell's clearance less half its length and diameter
+    if
+    (
+        wallClearance_.size() != mesh_.nCells()
+     || (mesh_.moving() && wallClearanceIndex_ != mesh_.time().timeIndex())
+    )
+    {
+        calcWallClearance();
+    }
     List<fiberInteraction::flow> fl(fibers_.size());
     forAll(fibers_, fi)
     {
@@ -602,7 +656,8 @@ Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
         fw =
             fiberInteraction::flow
             {
-                Zero, Zero, 0, GREAT, GREAT, 0, false, step_[fi].engaged
+                Zero, Zero, 0, GREAT, GREAT, 0, GREAT, false,
+                step_[fi].engaged
             };
         const fiber& f = fibers_[fi];
         if (step_[fi].st == status::gone || !f.location().located())
@@ -617,6 +672,13 @@ Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
         }
         fw.U = s.U;
         fw.G = s.G;
+        scalar dMax = 0;
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            dMax = max(dMax, f.segmentDiameter(i));
+        }
+        fw.wall =
+            wallClearance_[f.location().celli] - 0.5*(f.length() + dMax);
         fw.slack = dispersion_->fluctuationBound(f, s);
         const scalar slip =
             mag(f.velocity() - s.U) + 0.5*mag(f.omega())*f.length()
@@ -687,31 +749,54 @@ Foam::List<Foam::fiberInteraction::role> Foam::fiberCloud::roles
 
 void Foam::fiberCloud::interact(const scalar t, const scalar h)
 {
-    List<fiberIntegrator::load> loads(fibers_.size());
+    // The loads of the fibers present, new, in a buffer kept between
+    // intervals; an absent fiber's load is left as it is (a fiber not
+    // engaged in the window: none since the window's start)
+    const List<fiberInteraction::role> r(roles());
+    List<fiberIntegrator::load>& loads = loadBuf_;
+    loads.resize(fibers_.size());
+    forAll(r, fi)
+    {
+        if (r[fi] != fiberInteraction::role::absent)
+        {
+            loads[fi] = fiberIntegrator::load();
+        }
+    }
     const std::clock_t c0 = std::clock();
-    interactions_->interact(fibers_, roles(), t, h, loads);
+    interactions_->interact(fibers_, r, t, h, loads);
     cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
     ++nIntervals_;
-    forAll(step_, fi)
+    forAll(r, fi)
     {
-        step_[fi].load = std::move(loads[fi]);
+        if (r[fi] != fiberInteraction::role::absent)
+        {
+            step_[fi].load = std::move(loads[fi]);
+        }
     }
 }
 
 
 void Foam::fiberCloud::settle()
 {
-    List<fiberIntegrator::load> loads(step_.size());
-    forAll(step_, fi)
+    const List<fiberInteraction::role> r(roles());
+    List<fiberIntegrator::load>& loads = loadBuf_;
+    loads.resize(fibers_.size());
+    forAll(r, fi)
     {
-        loads[fi] = std::move(step_[fi].load);
+        if (r[fi] != fiberInteraction::role::absent)
+        {
+            loads[fi] = std::move(step_[fi].load);
+        }
     }
     const std::clock_t c0 = std::clock();
-    interactions_->settle(fibers_, roles(), loads);
+    interactions_->settle(fibers_, r, loads);
     cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
-    forAll(step_, fi)
+    forAll(r, fi)
     {
-        step_[fi].load = std::move(loads[fi]);
+        if (r[fi] != fiberInteraction::role::absent)
+        {
+            step_[fi].load = std::move(loads[fi]);
+        }
     }
 }
 

@@ -166,6 +166,8 @@ Foam::fiberInteractions::contact::contact
     touching_(),
     nCollisions_(0),
     denseFraction_(0),
+    windowSkin_(0.5),
+    tcWindow_(-1),
     nMissed_(0)
 {
     read(dict);
@@ -586,6 +588,25 @@ Foam::scalar Foam::fiberInteractions::contact::contactTime
 }
 
 
+Foam::scalar Foam::fiberInteractions::contact::shortestContactTime
+(
+    const PtrList<fiber>& fibers
+) const
+{
+    scalar mMin = GREAT;
+    for (const fiber& f : fibers)
+    {
+        mMin = min(mMin, f.mass());
+        for (label i = 0; f.flexible() && i < f.nSegments(); ++i)
+        {
+            mMin = min(mMin, f.segmentMass(i));
+        }
+    }
+    reduce(mMin, minOp<scalar>());
+    return mMin < GREAT ? contactTime(mMin/8) : GREAT;
+}
+
+
 Foam::scalar Foam::fiberInteractions::contact::nextInterval
 (
     const PtrList<fiber>& fibers,
@@ -601,17 +622,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
 
     // The contact time of the lightest fiber, or of a flexible fiber's
     // lightest segment (the body a contact strikes)
-    scalar mMin = GREAT;
-    for (const fiber& f : fibers)
-    {
-        mMin = min(mMin, f.mass());
-        for (label i = 0; f.flexible() && i < f.nSegments(); ++i)
-        {
-            mMin = min(mMin, f.segmentMass(i));
-        }
-    }
-    reduce(mMin, minOp<scalar>());
-    const scalar tc = mMin < GREAT ? contactTime(mMin/8) : GREAT;
+    const scalar tc = tcWindow_ > 0 ? tcWindow_ : shortestContactTime(fibers);
 
     // The longest interval allowed; the rest of the step is split into
     // equal parts no longer than that
@@ -1078,7 +1089,8 @@ void Foam::fiberInteractions::contact::writeRestart(Ostream& os) const
         os  << nl << iter.key() << token::SPACE << iter.val()[0]
             << token::SPACE << iter.val()[1];
     }
-    os << nl << "contactInterval " << hLast_ << token::SPACE << skinNext_;
+    os  << nl << "contactInterval " << hLast_ << token::SPACE << skinNext_
+        << token::SPACE << windowSkin_;
 }
 
 
@@ -1126,6 +1138,17 @@ void Foam::fiberInteractions::contact::readRestart(Istream& is)
         if (s.isNumber())
         {
             skinNext_ = s.number();
+
+            // The windows' skin (written since it adapts)
+            token w(is);
+            if (w.isNumber())
+            {
+                windowSkin_ = w.number();
+            }
+            else if (w.good())
+            {
+                is.putBack(w);
+            }
         }
         else if (s.good())
         {

@@ -21,7 +21,7 @@ Description
 #include "segmentDistance.H"
 #include "mathematicalConstants.H"
 
-#include <unordered_map>
+#include <algorithm>
 #include <vector>
 #include <cstdint>
 
@@ -34,7 +34,7 @@ using namespace Foam;
 typedef fiberInteractions::contact::segment segment;
 
 //- Scalars per segment in a processor's message (packSegment)
-const label nPacked = 56;
+const label nPacked = 57;
 
 //- Segment s into buf from position k on (labels and bools as exact
 //  scalars): one contiguous block per message, not a stream of tokens
@@ -74,6 +74,7 @@ void packSegment(const segment& s, UList<scalar>& buf, label& k)
     buf[k++] = s.tauLo;
     buf[k++] = s.tauHi;
     buf[k++] = s.g;
+    buf[k++] = s.wall;
     buf[k++] = s.later;
     buf[k++] = s.was;
 }
@@ -116,6 +117,7 @@ void unpackSegment(const UList<scalar>& buf, label& k, segment& s)
     s.tauLo = buf[k++];
     s.tauHi = buf[k++];
     s.g = buf[k++];
+    s.wall = buf[k++];
     s.later = buf[k++] != 0;
     s.was = buf[k++] != 0;
     s.local = -1;
@@ -323,7 +325,7 @@ void Foam::fiberInteractions::contact::localSegments
             vector u(Zero);
             scalar gradU = 0;
             scalar slip = 0;
-            flow fl{Zero, Zero, 0, GREAT, GREAT, 0, false, true};
+            flow fl{Zero, Zero, 0, GREAT, GREAT, 0, GREAT, false, true};
             if (flows)
             {
                 fl = (*flows)[fi];
@@ -341,7 +343,7 @@ void Foam::fiberInteractions::contact::localSegments
                     roles[fi] == role::fixed ? 0 : f.mass(), fi,
                     l.sX, l.sTheta, l.sV, l.sW, l.sTau, l.H, l.dX, l.dTheta,
                     u, gradU, slip, fl.slack, fl.tauLo, fl.tauHi, fl.g,
-                    fl.later, fl.engaged
+                    fl.wall, fl.later, fl.engaged
                 }
             );
             zPrev = z;
@@ -534,6 +536,9 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
     UList<bool>& engaged
 )
 {
+    // The shortest contact time, for the window's intervals (the fibers
+    // of the step, those a feed releases in it included, are all there)
+    tcWindow_ = shortestContactTime(fibers);
     if (!(tLeft > 0))
     {
         engaged = false;
@@ -582,15 +587,15 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
         return tLeft;
     }
 
-    // The pairs within reach and a skin of half the reach, with the flow
-    // at every segment
+    // The pairs within reach and the windows' skin (half a reach or more,
+    // adaptive: below), with the flow at every segment
     DynamicList<segment>& segs = near_.segs;
     DynamicList<FixedList<label, 2>>& cand = near_.cand;
     segs.clear();
     cand.clear();
     near_.valid = false;
     const scalar r0 = reach(fibers, roles);
-    const scalar skin = 0.5*r0;
+    const scalar skin = windowSkin_*r0;
     const scalar r = gather(fibers, roles, segs, nullptr, skin, &flows);
     candidates(segs, r, cand, skin);
 
@@ -726,19 +731,69 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
     }
     reduce(kick, maxOp<scalar>());
 
-    const auto closing = [&](const segment& A, const segment& B, scalar H)
+    // A pair's closing without kicks (symmetric in A and B), from each
+    // segment's terms (once per segment: ts) and the pair's differences
+    // of the fluid's and the centres' velocities (du, dv)
+    struct segTerms
     {
+        vector vc;
+        scalar turning;
+        scalar turnNow;
+        scalar turnAccel;
+        scalar accel;
+    };
+    List<segTerms> ts(segs.size());
+    forAll(segs, i)
+    {
+        const segment& S = segs[i];
+        ts[i] =
+            segTerms
+            {
+                centreVelocity(S), turning(S), turnNow(S),
+                min(turnAccel(S), GREAT/4), min(accel(S), GREAT/4)
+            };
+    }
+    // A fiber near a wall or symmetry plane may rebound off it within the
+    // window, which turns its velocity by up to twice its speed: where its
+    // gap to them is less than spd H (spd: a bound on its segment's points'
+    // speed, via the fluid or straight on) its path may leave the bounds
+    // above by up to 2 spd H more
+    const auto speed = [&](const label i, const scalar H)
+    {
+        const segment& S = segs[i];
+        return
+            min
+            (
+                mag(S.u) + S.slip + S.slack + S.g*H + 0.5*ts[i].turning,
+                mag(ts[i].vc) + ts[i].accel*H
+              + 0.5*(ts[i].turnNow + ts[i].turnAccel*H)
+            );
+    };
+    const auto rebound = [&](const label i, const scalar H)
+    {
+        const scalar spd = speed(i, H);
+        return segs[i].wall < spd*H ? 2*spd*H : 0;
+    };
+    const auto closing =
+        [&]
+        (
+            const label i, const label j, const scalar du, const scalar dv,
+            const scalar H
+        )
+    {
+        const segment& A = segs[i];
+        const segment& B = segs[j];
         const scalar viaFluid =
-            mag(A.u - B.u)*H
+            du*H
           + dFluid(A.slip, A.slack, A.tauHi, A.g, H)
           + dFluid(B.slip, B.slack, B.tauHi, B.g, H)
-          + 0.5*(turning(A) + turning(B))*H;
+          + 0.5*(ts[i].turning + ts[j].turning)*H;
         const scalar straight =
-            mag(centreVelocity(A) - centreVelocity(B))*H
-          + 0.5*(min(accel(A), GREAT/4) + min(accel(B), GREAT/4))*sqr(H)
-          + 0.5*(turnNow(A) + turnNow(B))*H
-          + 0.25*(min(turnAccel(A) + turnAccel(B), GREAT/4))*sqr(H);
-        return min(viaFluid, straight) + 2*kick*H;
+            dv*H
+          + 0.5*(ts[i].accel + ts[j].accel)*sqr(H)
+          + 0.5*(ts[i].turnNow + ts[j].turnNow)*H
+          + 0.25*min(ts[i].turnAccel + ts[j].turnAccel, GREAT/4)*sqr(H);
+        return min(viaFluid, straight) + rebound(i, H) + rebound(j, H);
     };
 
     // The far pairs (centres beyond r): from the largest values over all
@@ -791,6 +846,16 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
     reduce(uMax, maxOp<vector>());
     reduce(vMin, minOp<vector>());
     reduce(vMax, maxOp<vector>());
+    // The fastest fiber that may rebound within the rest of the step
+    scalar wallFast = 0;
+    forAll(segs, i)
+    {
+        if (segs[i].local >= 0 && rebound(i, tLeft) > 0)
+        {
+            wallFast = max(wallFast, speed(i, tLeft));
+        }
+    }
+    reduce(wallFast, maxOp<scalar>());
     const bool none = uMax.x() < uMin.x();
     const scalar duFar =
         none ? 0 : min(mag(uMax - uMin), gradMax*(r + skin));
@@ -805,7 +870,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
                 dvFar*H + accelMax*sqr(H) + turnNowMax*H
               + 0.5*turnAccelMax*sqr(H)
             )
-          + 2*kick*H;
+          + kick*H + 2*wallFast*H;
     };
 
     // The longest window in which the far pairs close at most the skin
@@ -828,69 +893,261 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
         return H;
     };
 
-    // Engaged: the fibers of a pair whose gap could close within the
-    // window, or is within a tenth of a diameter (a pair close at the
-    // last interval stays one: collisions are counted with that
-    // hysteresis).  The pairs that may meet within the window may kick
-    // their fibers at up to their relative speed: where that is more than
-    // the kicks allowed for, the window is taken again with it (at most
-    // twice)
+    // The windows this search allows: the longest, Hs (the far pairs
+    // close at most the skin), and its halves to a 32nd, Hw
+    const label nW = 6;
+    const scalar Hs = window();
+    FixedList<scalar, nW> Hw;
+    for (label j = 0; j < nW; ++j)
+    {
+        Hw[j] = tLeft/std::ceil(tLeft/(Hs/pow(2.0, j))*(1 - 1e-9));
+    }
+
+    // The pairs that could close within Hs with a kick (any window here
+    // lets a kick move a fiber at most the skin), with their gaps and
+    // closing without kicks over each Hw
+    struct nearPair
+    {
+        label bi;
+        scalar g;
+        scalar du;
+        scalar dv;
+        FixedList<scalar, nW> c;
+    };
+    DynamicList<nearPair> near(bounds.size());
+    forAll(bounds, bi)
+    {
+        const bound& bd = bounds[bi];
+        const segment& Q = segs[bd.i];
+        const segment& P = segs[bd.j];
+        const bool qFirst =
+            Q.fiber < P.fiber || (Q.fiber == P.fiber && Q.seg < P.seg);
+        const segment& A = qFirst ? Q : P;
+        const segment& B = qFirst ? P : Q;
+        const scalar du = mag(Q.u - P.u);
+        const scalar dv = mag(ts[bd.i].vc - ts[bd.j].vc);
+        const scalar within =
+            max(closing(bd.i, bd.j, du, dv, Hw[0]) + skin, 0.1*min(A.d, B.d));
+        if (bd.gLow > within)
+        {
+            continue;
+        }
+        const segmentDistance::result cp =
+            segmentDistance::closest(A.a, A.b, B.a, B.b);
+        const scalar g = mag(cp.a - cp.b) - 0.5*(A.d + B.d) - range_;
+        if (g > within)
+        {
+            continue;
+        }
+        nearPair np{bi, g, du, dv, FixedList<scalar, nW>()};
+        for (label j = 0; j < nW; ++j)
+        {
+            np.c[j] = closing(bd.i, bd.j, du, dv, Hw[j]);
+        }
+        near.append(np);
+    }
+
+    // Engaged in a window H (Hw[jH], or another where jH < 0): the fibers
+    // of a pair whose gap could close within it, or is within a tenth of
+    // a diameter (a pair close at the last interval stays one: collisions
+    // are counted with that hysteresis).  Only an engaged fiber feels
+    // contacts in the window, so only it can be kicked: a pair closes by
+    // a kick more only where one of its fibers is engaged, and the engaged
+    // fibers grow until no such pair is left (the least such set: the
+    // same on any number of processors; a periodic image's or another
+    // processor's fiber is known engaged by its id, exchanged until no
+    // processor finds more).  Two engaged fibers meet in the intervals'
+    // search.  Returns the largest relative speed of the pairs that may
+    // meet (their kick) and counts the pairs touching where one of the
+    // fibers ran through the last window on its own
     const List<bool> owes(engaged);
+    DynamicList<label> kickOnly(near.size());
+    labelHashSet engagedIds;
+    const bool exchange = Pstream::parRun() || periodic_.size();
+    const auto engage =
+        [&]
+        (
+            const scalar H, const label jH, List<bool>& eng,
+            label& nMissed
+        )
+    {
+        eng = owes;
+        nMissed = 0;
+        kickOnly.clear();
+        engagedIds.clear();
+        const auto sides =
+            [&](const nearPair& np, const segment*& A, const segment*& B)
+        {
+            const segment& Q = segs[bounds[np.bi].i];
+            const segment& P = segs[bounds[np.bi].j];
+            const bool qFirst =
+                Q.fiber < P.fiber || (Q.fiber == P.fiber && Q.seg < P.seg);
+            A = qFirst ? &Q : &P;
+            B = qFirst ? &P : &Q;
+        };
+        const auto engageBoth = [&](const segment& A, const segment& B)
+        {
+            bool grew = false;
+            for (const segment* sg : {&A, &B})
+            {
+                if (sg->local >= 0 && sg->m > 0 && !eng[sg->local])
+                {
+                    eng[sg->local] = true;
+                    grew = true;
+                }
+            }
+            return grew;
+        };
+        const auto isEngaged = [&](const segment& S)
+        {
+            return
+                S.m > 0
+             && (S.local >= 0 ? eng[S.local] : engagedIds.found(S.fiber));
+        };
+        scalar meetKick = 0;
+        forAll(near, k)
+        {
+            const nearPair& np = near[k];
+            const segment* A;
+            const segment* B;
+            sides(np, A, B);
+            const scalar c0 =
+                jH >= 0
+              ? np.c[jH]
+              : closing(bounds[np.bi].i, bounds[np.bi].j, np.du, np.dv, H);
+            if
+            (
+                np.g < 0 && A->fiber != B->fiber && A->local >= 0
+             && !A->later && !B->later
+             && ((A->m > 0 && !A->was) || (B->m > 0 && !B->was))
+            )
+            {
+                // Touching, though one of them ran through the last
+                // window on its own: the window's bounds failed (counted
+                // once, where the first of the pair is)
+                ++nMissed;
+            }
+            if (np.g <= max(c0, 0.1*min(A->d, B->d)))
+            {
+                engageBoth(*A, *B);
+                if (A->fiber != B->fiber)
+                {
+                    meetKick = max(meetKick, relSpeed(*A, *B));
+                }
+            }
+            else if (np.g <= c0 + kick*H && A->m > 0 && B->m > 0)
+            {
+                kickOnly.append(k);
+            }
+        }
+        while (true)
+        {
+            for (bool grew = true; grew; )
+            {
+                grew = false;
+                for (const label k : kickOnly)
+                {
+                    const segment* A;
+                    const segment* B;
+                    sides(near[k], A, B);
+                    if (isEngaged(*A) || isEngaged(*B))
+                    {
+                        grew = engageBoth(*A, *B) || grew;
+                    }
+                }
+            }
+            if (!exchange)
+            {
+                break;
+            }
+            List<labelList> ids(Pstream::nProcs());
+            DynamicList<label> mine;
+            forAll(fibers, fi)
+            {
+                if (eng[fi] && !engagedIds.found(fibers[fi].id()))
+                {
+                    mine.append(fibers[fi].id());
+                }
+            }
+            ids[Pstream::myProcNo()] = std::move(mine);
+            Pstream::gatherList(ids);
+            Pstream::scatterList(ids);
+            label nNew = 0;
+            for (const labelList& l : ids)
+            {
+                for (const label id : l)
+                {
+                    nNew += engagedIds.insert(id);
+                }
+            }
+            if (nNew == 0)
+            {
+                break;
+            }
+        }
+        for (const label k : kickOnly)
+        {
+            const segment* A;
+            const segment* B;
+            sides(near[k], A, B);
+            if ((isEngaged(*A) || isEngaged(*B)) && A->fiber != B->fiber)
+            {
+                meetKick = max(meetKick, relSpeed(*A, *B));
+            }
+        }
+        return returnReduce(meetKick, maxOp<scalar>());
+    };
+    const auto nEngagedOf = [&](const List<bool>& eng)
+    {
+        label n = 0;
+        forAll(fibers, fi)
+        {
+            n += roles[fi] == role::free && eng[fi];
+        }
+        return returnReduce(n, sumOp<label>());
+    };
+    label nMove = 0;
+    forAll(fibers, fi)
+    {
+        nMove += roles[fi] == role::free;
+    }
+    reduce(nMove, sumOp<label>());
+
+    // The window's length.  Every fiber ends a sub-step at a window's end,
+    // and an engaged fiber at each of its intervals, about contactSteps
+    // per contact time.  Of the windows Hw the one with the fewest such
+    // stops per unit time: (moving fibers + engaged ones x intervals in
+    // it)/H
+    const scalar hc = tcWindow_/contactSteps_;
+    scalar Hbest = Hs;
+    label jBest = 0;
+    scalar costBest = GREAT;
+    List<bool> eng(engaged.size());
+    for (label j = 0; j < nW; ++j)
+    {
+        label nMissed = 0;
+        engage(Hw[j], j, eng, nMissed);
+        const scalar cost =
+            (nMove + nEngagedOf(eng)*max(1, Hw[j]/hc))/Hw[j];
+        if (cost < costBest)
+        {
+            costBest = cost;
+            Hbest = Hw[j];
+            jBest = j;
+        }
+    }
+
+    // The pairs that may meet within the window may kick their fibers at
+    // up to their relative speed: where that is more than the kicks
+    // allowed for, the window is taken again with it (at most twice)
     scalar H = 0;
     for (label pass = 0; pass < 3; ++pass)
     {
-        H = window();
-        forAll(engaged, fi)
-        {
-            engaged[fi] = owes[fi];
-        }
-        scalar meetKick = 0;
+        const scalar Hk = window();
+        H = min(Hbest, Hk);
         label nMissed = 0;
-        for (const bound& bd : bounds)
-        {
-            const segment& Q = segs[bd.i];
-            const segment& P = segs[bd.j];
-            const bool qFirst =
-                Q.fiber < P.fiber || (Q.fiber == P.fiber && Q.seg < P.seg);
-            const segment& A = qFirst ? Q : P;
-            const segment& B = qFirst ? P : Q;
-            const scalar allowed = max(closing(A, B, H), 0.1*min(A.d, B.d));
-            if (bd.gLow > allowed)
-            {
-                continue;
-            }
-            const segmentDistance::result cp =
-                segmentDistance::closest(A.a, A.b, B.a, B.b);
-            const scalar g = mag(cp.a - cp.b) - 0.5*(A.d + B.d) - range_;
-            if (g > allowed)
-            {
-                continue;
-            }
-            if (A.fiber != B.fiber)
-            {
-                meetKick = max(meetKick, relSpeed(A, B));
-            }
-            if
-            (
-                g < 0 && A.fiber != B.fiber && A.local >= 0
-             && !A.later && !B.later
-             && ((A.m > 0 && !A.was) || (B.m > 0 && !B.was))
-            )
-            {
-                // Touching, though one of them ran through the last window
-                // on its own: the window's bounds failed (counted once,
-                // where the first of the pair is)
-                ++nMissed;
-            }
-            for (const segment* sg : {&Q, &P})
-            {
-                if (sg->local >= 0 && sg->m > 0)
-                {
-                    engaged[sg->local] = true;
-                }
-            }
-        }
-        reduce(meetKick, maxOp<scalar>());
+        const scalar meetKick =
+            engage(H, H == Hw[jBest] ? jBest : -1, eng, nMissed);
         if (meetKick <= kick || pass == 2)
         {
             nMissed_ += nMissed;
@@ -898,21 +1155,35 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
         }
         kick = meetKick;
     }
+    forAll(engaged, fi)
+    {
+        engaged[fi] = eng[fi];
+    }
+
+    // The next window's skin: twice as thick where the longest window of
+    // this one was the cheapest and did not reach the step's end (while
+    // the search finds at most 8 pairs per segment), half as thick where
+    // one at most a quarter as long was
+    // (pairs over all processors: the same on any number of them)
+    label nSeg = 0;
+    for (const segment& sg : segs)
+    {
+        nSeg += sg.local >= 0;
+    }
+    const scalar pairsPerSeg =
+        scalar(returnReduce(cand.size(), sumOp<label>()))
+       /max(returnReduce(nSeg, sumOp<label>()), 1);
+    if (jBest == 0 && Hs < (1 - 1e-9)*tLeft && pairsPerSeg < 8)
+    {
+        windowSkin_ = min(2*windowSkin_, 16.0);
+    }
+    else if (jBest >= 2 || pairsPerSeg > 32)
+    {
+        windowSkin_ = max(0.5*windowSkin_, 0.5);
+    }
 
     // The fraction engaged (of the fibers that move)
-    label nMove = 0;
-    label nEngaged = 0;
-    forAll(fibers, fi)
-    {
-        if (roles[fi] == role::free)
-        {
-            ++nMove;
-            nEngaged += engaged[fi];
-        }
-    }
-    reduce(nMove, sumOp<label>());
-    reduce(nEngaged, sumOp<label>());
-    denseFraction_ = nMove > 0 ? scalar(nEngaged)/nMove : 0;
+    denseFraction_ = nMove > 0 ? scalar(nEngagedOf(eng))/nMove : 0;
 
     segs.clear();
     cand.clear();
@@ -1174,7 +1445,7 @@ void Foam::fiberInteractions::contact::sparseCandidates
     const scalar skin
 ) const
 {
-    // Cells of size r by their integer coordinates, in a hash table
+    // Cells of size r by their integer coordinates
     auto cell = [&](const point& p, const label dim)
     {
         return int64_t(std::floor((p[dim] - bb.min()[dim])/r));
@@ -1186,11 +1457,18 @@ void Foam::fiberInteractions::contact::sparseCandidates
     {
         return ((k + 1)*ny + (j + 1))*nx + (i + 1);
     };
-    std::unordered_map<int64_t, std::vector<label>> grid;
+    // The segments sorted by their cells' keys (one array: a hash table of
+    // lists cost an allocation per cell at every interval); the three
+    // cells of a row of neighbours have consecutive keys, one search.
+    // Half of each segment's length and diameter (ext)
+    std::vector<std::pair<int64_t, label>> byKey(segs.size());
+    List<scalar> ext(segs.size());
     forAll(segs, i)
     {
-        grid[key(cell(c[i], 0), cell(c[i], 1), cell(c[i], 2))].push_back(i);
+        byKey[i] = {key(cell(c[i], 0), cell(c[i], 1), cell(c[i], 2)), i};
+        ext[i] = 0.5*(mag(segs[i].b - segs[i].a) + segs[i].d);
     }
+    std::sort(byKey.begin(), byKey.end());
 
     forAll(segs, q)
     {
@@ -1206,27 +1484,29 @@ void Foam::fiberInteractions::contact::sparseCandidates
         {
             for (int64_t j = cj - 1; j <= cj + 1; ++j)
             {
-                for (int64_t i = ci - 1; i <= ci + 1; ++i)
-                {
-                    const auto it = grid.find(key(i, j, k));
-                    if (it == grid.end())
-                    {
-                        continue;
-                    }
-                    for (const label p : it->second)
-                    {
-                        const segment& P = segs[p];
-                        const scalar within =
-                            0.5*(mag(Q.b - Q.a) + mag(P.b - P.a) + Q.d + P.d)
-                          + range_ + skin;
-                        if
+                const int64_t kLast = key(ci + 1, j, k);
+                for
+                (
+                    auto it =
+                        std::lower_bound
                         (
-                            (P.fiber != Q.fiber || selfPair(Q, P))
-                         && magSqr(c[p] - c[q]) <= sqr(within)
-                        )
-                        {
-                            cand.append(FixedList<label, 2>{q, p});
-                        }
+                            byKey.begin(), byKey.end(),
+                            std::pair<int64_t, label>(key(ci - 1, j, k), -1)
+                        );
+                    it != byKey.end() && it->first <= kLast;
+                    ++it
+                )
+                {
+                    const label p = it->second;
+                    const segment& P = segs[p];
+                    const scalar within = ext[q] + ext[p] + range_ + skin;
+                    if
+                    (
+                        (P.fiber != Q.fiber || selfPair(Q, P))
+                     && magSqr(c[p] - c[q]) <= sqr(within)
+                    )
+                    {
+                        cand.append(FixedList<label, 2>{q, p});
                     }
                 }
             }
