@@ -846,16 +846,67 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
     reduce(uMax, maxOp<vector>());
     reduce(vMin, minOp<vector>());
     reduce(vMax, maxOp<vector>());
-    // The fastest fiber that may rebound within the rest of the step
-    scalar wallFast = 0;
+    // The fastest fiber that may rebound within a window H, wallFast(H):
+    // a segment may reach a wall or symmetry plane no sooner than its gap
+    // over its speed bound for the rest of the step (tHit); of all
+    // processors' segments, those faster than every one that may hit
+    // sooner (by tHit, the speeds rising)
+    typedef std::pair<scalar, scalar> hitSpeed;
+    std::vector<hitSpeed> hits;
     forAll(segs, i)
     {
         if (segs[i].local >= 0 && rebound(i, tLeft) > 0)
         {
-            wallFast = max(wallFast, speed(i, tLeft));
+            const scalar spd = speed(i, tLeft);
+            hits.push_back({max(segs[i].wall, 0)/max(spd, VSMALL), spd});
         }
     }
-    reduce(wallFast, maxOp<scalar>());
+    const auto envelope = [](std::vector<hitSpeed>& h)
+    {
+        std::sort(h.begin(), h.end());
+        std::vector<hitSpeed> e;
+        for (const hitSpeed& x : h)
+        {
+            if (e.empty() || x.second > e.back().second)
+            {
+                e.push_back(x);
+            }
+        }
+        h.swap(e);
+    };
+    envelope(hits);
+    if (Pstream::parRun())
+    {
+        List<List<scalar>> all(Pstream::nProcs());
+        List<scalar>& mine = all[Pstream::myProcNo()];
+        mine.setSize(2*hits.size());
+        forAll(hits, k)
+        {
+            mine[2*k] = hits[k].first;
+            mine[2*k + 1] = hits[k].second;
+        }
+        Pstream::gatherList(all);
+        Pstream::scatterList(all);
+        hits.clear();
+        for (const List<scalar>& l : all)
+        {
+            for (label k = 0; k + 1 < l.size(); k += 2)
+            {
+                hits.push_back({l[k], l[k + 1]});
+            }
+        }
+        envelope(hits);
+    }
+    const auto wallFast = [&hits](const scalar H)
+    {
+        // The last of the envelope that may hit within H (the fastest)
+        const auto it =
+            std::lower_bound
+            (
+                hits.begin(), hits.end(), hitSpeed(H, -GREAT)
+            );
+        return it == hits.begin() ? 0 : std::prev(it)->second;
+    };
     const bool none = uMax.x() < uMin.x();
     const scalar duFar =
         none ? 0 : min(mag(uMax - uMin), gradMax*(r + skin));
@@ -870,7 +921,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
                 dvFar*H + accelMax*sqr(H) + turnNowMax*H
               + 0.5*turnAccelMax*sqr(H)
             )
-          + kick*H + 2*wallFast*H;
+          + kick*H + 2*wallFast(H)*H;
     };
 
     // The longest window in which the far pairs close at most the skin
