@@ -45,7 +45,12 @@ Foam::fiberTracker::fiberTracker(const polyMesh& mesh)
     mesh_(mesh),
     kind_(mesh.boundaryMesh().size(), patchKind::outlet),
     acmiOf_(mesh.boundaryMesh().size(), -1),
-    staticMesh_(tetCache != 0)
+    useCache_(tetCache != 0),
+    stamp_(0),
+    stampIndex_(-1),
+    stampMoving_(false),
+    movingCentre_(),
+    movingCentreStamp_()
 {
     if (!tetCache)
     {
@@ -153,32 +158,55 @@ void Foam::fiberTracker::checkAMIDecomposition() const
 }
 
 
+const Foam::point& Foam::fiberTracker::tetCentre(const label celli) const
+{
+    const label s = stamp();
+    if (!stampMoving_)
+    {
+        // particle's stationary geometry
+        return mesh_.cellCentres()[celli];
+    }
+    if (movingCentre_.size() != mesh_.nCells())
+    {
+        movingCentre_.setSize(mesh_.nCells());
+        movingCentreStamp_.setSize(mesh_.nCells());
+        movingCentreStamp_ = -1;
+    }
+    if (movingCentreStamp_[celli] != s)
+    {
+        movingCentre_[celli] =
+            mesh_.cells()[celli].centre(mesh_.points(), mesh_.faces());
+        movingCentreStamp_[celli] = s;
+    }
+    return movingCentre_[celli];
+}
+
+
 bool Foam::fiberTracker::fillCache(const trackedPoint& tp) const
 {
-    if (!staticMesh_ || mesh_.changing())
-    {
-        staticMesh_ = false;
-        return false;
-    }
-    if (!tp.located())
+    if (!useCache_ || !tp.located())
     {
         return false;
     }
     trackedPoint::tetGeometry& c = tp.cache;
+    const label s = stamp();
     if
     (
         c.celli != tp.celli || c.tetFacei != tp.tetFacei
-     || c.tetPti != tp.tetPti
+     || c.tetPti != tp.tetPti || c.stamp != s
     )
     {
-        // The tetrahedron of particle's stationary walk: the cell centre
-        // and the triangle of the tet decomposition, and its reverse
-        // transform: the volume-scaled face normals opposite each vertex
+        // The tetrahedron of particle's walk: the cell centre and the
+        // triangle of the tet decomposition, and its reverse transform:
+        // the volume-scaled face normals opposite each vertex.  On a mesh
+        // that moved, that of the present points, as particle's moving
+        // geometry takes it at the end of the motion (step fraction 1,
+        // where the fibers move)
         c.tri = tp.tet().faceTriIs(mesh_);
         const pointField& pts = mesh_.points();
         c.A = barycentricTensor
         (
-            mesh_.cellCentres()[tp.celli],
+            tetCentre(tp.celli),
             pts[c.tri[0]],
             pts[c.tri[1]],
             pts[c.tri[2]]
@@ -193,6 +221,7 @@ bool Foam::fiberTracker::fillCache(const trackedPoint& tp) const
         c.celli = tp.celli;
         c.tetFacei = tp.tetFacei;
         c.tetPti = tp.tetPti;
+        c.stamp = s;
     }
     return true;
 }
