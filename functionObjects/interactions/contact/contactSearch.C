@@ -733,7 +733,9 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
 
     // A pair's closing without kicks (symmetric in A and B), from each
     // segment's terms (once per segment: ts) and the pair's differences
-    // of the fluid's and the centres' velocities (du, dv)
+    // of the fluid's and the centres' velocities (du, dv); the speeds of
+    // the segment's bound below, via the fluid (|u| + slip + slack) and
+    // straight on (|vc|)
     struct segTerms
     {
         vector vc;
@@ -741,6 +743,8 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
         scalar turnNow;
         scalar turnAccel;
         scalar accel;
+        scalar fluidSpeed;
+        scalar magVc;
     };
     List<segTerms> ts(segs.size());
     forAll(segs, i)
@@ -750,7 +754,8 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
             segTerms
             {
                 centreVelocity(S), turning(S), turnNow(S),
-                min(turnAccel(S), GREAT/4), min(accel(S), GREAT/4)
+                min(turnAccel(S), GREAT/4), min(accel(S), GREAT/4),
+                mag(S.u) + S.slip + S.slack, mag(centreVelocity(S))
             };
     }
     // A fiber near a wall or symmetry plane may rebound off it within the
@@ -760,13 +765,12 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
     // above by up to 2 spd H more
     const auto speed = [&](const label i, const scalar H)
     {
-        const segment& S = segs[i];
+        const segTerms& t = ts[i];
         return
             min
             (
-                mag(S.u) + S.slip + S.slack + S.g*H + 0.5*ts[i].turning,
-                mag(ts[i].vc) + ts[i].accel*H
-              + 0.5*(ts[i].turnNow + ts[i].turnAccel*H)
+                t.fluidSpeed + segs[i].g*H + 0.5*t.turning,
+                t.magVc + t.accel*H + 0.5*(t.turnNow + t.turnAccel*H)
             );
     };
     const auto rebound = [&](const label i, const scalar H)
