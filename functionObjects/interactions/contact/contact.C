@@ -665,16 +665,20 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
         segs.clear();
         cand.clear();
         near_.inReach.clear();
+        near_.lambda = 0;
         const scalar r0 = reach(fibers, roles);
         near_.skin =
             skinNext_ < 0 ? 0.5*r0 : min(max(skinNext_, 0.05*r0), 0.5*r0);
         near_.r = gather(fibers, roles, segs, nullptr, near_.skin);
-        candidates(segs, near_.r, cand, near_.skin, &near_.inReach);
+        candidates
+        (
+            segs, near_.r, cand, near_.skin, &near_.inReach, &near_.lambda
+        );
         near_.valid = true;
         hMax =
             approachLimit
             (
-                segs, cand, near_.r, near_.skin,
+                segs, cand, near_.lambda, near_.r, near_.skin,
                 min(hLast_ > 0 ? 2*hLast_ : tc, tLeft), vFar
             );
     }
