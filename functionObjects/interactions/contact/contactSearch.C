@@ -222,7 +222,7 @@ boundBox segmentBox(const segment& s, const scalar r)
 //- Segments by cell of a dense grid of cells of size r over the box bb
 //  (n cells per direction, a layer of empty ones around): compressed rows
 //  (start, byCell), and in cell order what the pair test needs: centres,
-//  half length and diameter plus extra, half extents (halfExtent), the
+//  half length and diameter, half extents (halfExtent), the
 //  centres' velocities, fiber, local.  Kept between searches for its
 //  storage (fresh arrays of this size at every interval cost page faults)
 struct Foam::fiberInteractions::contact::searchGrid
@@ -245,8 +245,7 @@ struct Foam::fiberInteractions::contact::searchGrid
         const UList<segment>& segs,
         const boundBox& bb,
         const scalar r,
-        const FixedList<int64_t, 3>& n,
-        const scalar extra
+        const FixedList<int64_t, 3>& n
     )
     {
         const size_t ns = segs.size();
@@ -283,7 +282,7 @@ struct Foam::fiberInteractions::contact::searchGrid
         {
             const label p = byCell[e];
             cc[e] = c[p];
-            ce[e] = ext[p] + extra;
+            ce[e] = ext[p];
             ch[e] = halfExtent(segs[p]);
             cv[e] = centreVelocity(segs[p]);
             cf[e] = segs[p].fiber;
@@ -1473,7 +1472,7 @@ void Foam::fiberInteractions::contact::candidates
         }
         return;
     }
-    g.build(segs, bb, r, n, range_ + skin);
+    g.build(segs, bb, r, n);
     const std::vector<point>& cc = g.cc;
     const std::vector<scalar>& ce = g.ce;
     const std::vector<vector>& ch = g.ch;
@@ -1489,71 +1488,86 @@ void Foam::fiberInteractions::contact::candidates
     const scalar rFar2 = lambda ? sqr(max(r - skin, 0)) : GREAT;
     scalar lambda2 = 0;
 
+    // In cell order, every entry against those after it in its own cell
+    // and against the 13 neighbouring cells ahead of it (a half stencil:
+    // each pair is met once, and consecutive entries share their
+    // neighbours in the cache); a pair with a local segment is kept, as
+    // (local, other), and both orders where both are local
     const int64_t sy = n[0];
     const int64_t sz = n[0]*n[1];
-    forAll(segs, q)
+    const scalar extra = range_ + skin;
+    FixedList<std::pair<int64_t, int64_t>, 6> rows;
+    const label ns = segs.size();
+    for (label a = 0; a < ns; ++a)
     {
+        const label q = g.byCell[a];
         const segment& Q = segs[q];
-        if (Q.local < 0)
+        const bool lq = cl[a];
+        const int64_t k = g.cellOf[q];
+        const point& cq = cc[a];
+        const scalar eq = ce[a];
+        const vector& hq = ch[a];
+        const vector& vq = cv[a];
+
+        // The rest of its own cell, the next cell of its row, the next
+        // row's three cells and the nine of the next layer
+        rows[0] = {a + 1, g.start[k + 1]};
+        rows[1] = {g.start[k + 1], g.start[k + 2]};
+        rows[2] = {g.start[k + sy - 1], g.start[k + sy + 2]};
+        rows[3] = {g.start[k + sz - sy - 1], g.start[k + sz - sy + 2]};
+        rows[4] = {g.start[k + sz - 1], g.start[k + sz + 2]};
+        rows[5] = {g.start[k + sz + sy - 1], g.start[k + sz + sy + 2]};
+        for (const std::pair<int64_t, int64_t>& row : rows)
         {
-            continue;
-        }
-        const point& cq = c[q];
-        const scalar eq = ext[q];
-        const vector hq(halfExtent(Q));
-        const vector vq(centreVelocity(Q));
-        for (int64_t dz = -sz; dz <= sz; dz += sz)
-        {
-            for (int64_t dy = -sy; dy <= sy; dy += sy)
+            for (int64_t e = row.first; e < row.second; ++e)
             {
-                const int64_t k0 = g.cellOf[q] + dz + dy - 1;
-                for (label e = g.start[k0]; e < g.start[k0 + 3]; ++e)
+                const bool lp = cl[e];
+                if (!lq && !lp)
                 {
-                    // Two local segments: the pair once, both orders
-                    const label p = g.byCell[e];
-                    if
-                    (
-                        (cl[e] && p < q)
-                     || (g.cf[e] == Q.fiber && !selfPair(Q, segs[p]))
-                    )
+                    continue;
+                }
+                const label p = g.byCell[e];
+                if (g.cf[e] == Q.fiber && !selfPair(Q, segs[p]))
+                {
+                    continue;
+                }
+                const vector dc(cc[e] - cq);
+                const scalar d2 = magSqr(dc);
+                const scalar within = eq + ce[e];
+                if (d2 > sqr(within + extra))
+                {
+                    continue;
+                }
+                if (d2 >= rFar2)
+                {
+                    const scalar v2 = magSqr(cv[e] - vq);
+                    if (v2 > lambda2*d2)
                     {
-                        continue;
+                        lambda2 = v2/d2;
                     }
-                    const vector dc(cc[e] - cq);
-                    const scalar d2 = magSqr(dc);
-                    if (d2 > sqr(eq + ce[e]))
-                    {
-                        continue;
-                    }
-                    if (d2 >= rFar2)
-                    {
-                        const scalar v2 = magSqr(cv[e] - vq);
-                        if (v2 > lambda2*d2)
-                        {
-                            lambda2 = v2/d2;
-                        }
-                    }
-                    if (!boxesMeet(dc, hq, ch[e], range_ + skin))
-                    {
-                        continue;
-                    }
+                }
+                if (!boxesMeet(dc, hq, ch[e], extra))
+                {
+                    continue;
+                }
+                const bool near =
+                    inReach
+                 && d2 <= sqr(within + range_)
+                 && boxesMeet(dc, hq, ch[e], range_);
+                if (lq)
+                {
                     cand.append(FixedList<label, 2>{q, p});
-                    if (cl[e])
-                    {
-                        cand.append(FixedList<label, 2>{p, q});
-                    }
-                    if
-                    (
-                        inReach
-                     && d2 <= sqr(eq + ce[e] - skin)
-                     && boxesMeet(dc, hq, ch[e], range_)
-                    )
+                    if (near)
                     {
                         inReach->append(FixedList<label, 2>{q, p});
-                        if (cl[e])
-                        {
-                            inReach->append(FixedList<label, 2>{p, q});
-                        }
+                    }
+                }
+                if (lp)
+                {
+                    cand.append(FixedList<label, 2>{p, q});
+                    if (near)
+                    {
+                        inReach->append(FixedList<label, 2>{p, q});
                     }
                 }
             }
