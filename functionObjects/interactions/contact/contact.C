@@ -951,9 +951,27 @@ void Foam::fiberInteractions::contact::settle
     // which the sum is not zero where the partners did not move as each
     // side predicted: each gets -(J_A + J_B)/2 back at the contact point
     // at the next interval, so the pair's impulses are equal and opposite
+    // Only the fibers of a contact of the interval take part, and the
+    // fixed ones (each moving side of a pair has its record, a fixed one
+    // none: so a partner on another processor is there too, within reach
+    // of this one's fibers that take part)
+    labelHashSet inContact(2*records_.size() + 16);
+    forAllConstIters(records_, iter)
+    {
+        inContact.insert(iter.key()[0]);
+        inContact.insert(iter.key()[2]);
+    }
+    settleRoles_.setSize(roles.size());
+    forAll(roles, fi)
+    {
+        settleRoles_[fi] =
+            roles[fi] == role::fixed || inContact.found(fibers[fi].id())
+          ? roles[fi]
+          : role::absent;
+    }
     DynamicList<segment>& segs = settleSegs_;
     segs.clear();
-    gather(fibers, roles, segs, &loads);
+    gather(fibers, settleRoles_, segs, &loads);
     HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
         where(2*segs.size());
     forAll(segs, i)
