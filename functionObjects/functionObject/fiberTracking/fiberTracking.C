@@ -440,6 +440,29 @@ void Foam::functionObjects::fiberTracking::logStep() const
             << " (data on the outlet face of a fiber straddling it)";
     }
     Log << endl;
+
+    // Implicit contacts: what set the intervals' lengths (their cost)
+    if (cm)
+    {
+        typedef fiberInteractions::contact ct;
+        const FixedList<label, 7>& n = cm->limitedIntervals();
+        label nAll = 0;
+        for (const label k : n)
+        {
+            nAll += k;
+        }
+        if (nAll > 0)
+        {
+            Log << type() << " " << name() << " intervals so far, set by:"
+                << " pairs touching and approaching " << n[ct::touching]
+                << ", sliding contacts " << n[ct::sliding]
+                << ", pairs approaching across a gap " << n[ct::approaching]
+                << ", the far pairs (skin) " << n[ct::far]
+                << ", growth (twice the last) " << n[ct::growth]
+                << ", the first (a contact time) " << n[ct::first]
+                << ", the step's end " << n[ct::stepEnd] << endl;
+        }
+    }
 }
 
 

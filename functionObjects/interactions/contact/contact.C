@@ -168,7 +168,8 @@ Foam::fiberInteractions::contact::contact
     denseFraction_(0),
     windowSkin_(0.5),
     tcWindow_(-1),
-    nMissed_(0)
+    nMissed_(0),
+    nLimited_(Zero)
 {
     read(dict);
     findPeriodic();
@@ -649,6 +650,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
         }
     }
     scalar vFar = 0;
+    label why = -1;
     if (implicit_)
     {
         // Pairs within reach and a skin: how fast they close (adaptive:
@@ -679,8 +681,17 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
             approachLimit
             (
                 segs, cand, near_.lambda, near_.r, near_.skin,
-                min(hLast_ > 0 ? 2*hLast_ : tc, tLeft), vFar
+                min(hLast_ > 0 ? 2*hLast_ : tc, tLeft), vFar, why
             );
+        if (why < 0)
+        {
+            const scalar cap = hLast_ > 0 ? 2*hLast_ : tc;
+            why =
+                tLeft <= cap ? limit::stepEnd
+              : hLast_ > 0 ? limit::growth
+              : limit::first;
+        }
+        ++nLimited_[why];
     }
     else if (tc < GREAT)
     {

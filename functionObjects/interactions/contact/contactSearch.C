@@ -454,7 +454,8 @@ Foam::scalar Foam::fiberInteractions::contact::pairLimit
 (
     const segment& A,
     const segment& B,
-    const scalar h
+    const scalar h,
+    label& why
 ) const
 {
     const scalar s = mag(0.5*(A.a + A.b - B.a - B.b));
@@ -496,11 +497,22 @@ Foam::scalar Foam::fiberInteractions::contact::pairLimit
         dist > SMALL*(A.d + B.d)
       ? max(-(vr & (r.a - r.b))/dist, 0)
       : mag(vr);
-    scalar hp = vn*h > allowed ? allowed/vn : h;
+    scalar hp = h;
+    if (vn*h > allowed)
+    {
+        hp = allowed/vn;
+        why = g > 0 ? limit::approaching : limit::touching;
+    }
     if (implicit_ && g <= 0 && mu_ > 0)
     {
         const vector n((r.a - r.b)/max(dist, VSMALL));
-        hp = min(hp, slideLimit(A, B, n, 0.5*(A.d + B.d) - dist, vr));
+        const scalar hs =
+            slideLimit(A, B, n, 0.5*(A.d + B.d) - dist, vr);
+        if (hs < hp)
+        {
+            hp = hs;
+            why = limit::sliding;
+        }
     }
     return hp;
 }
@@ -514,7 +526,8 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     const scalar r,
     const scalar skin,
     const scalar hMax,
-    scalar& vFar
+    scalar& vFar,
+    label& why
 ) const
 {
     // The candidates.  The velocity gradient at the scale of the pairs
@@ -527,6 +540,7 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     // each other, moves no point of the axis)
     scalar h = hMax;
     scalar lambda = lambdaPairs;
+    why = -1;
     for (const FixedList<label, 2>& ij : cand)
     {
         // Both local: the pair once (the local segments come first, and
@@ -534,7 +548,7 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
         // it comes before it)
         if (!(ij[1] < ij[0]))
         {
-            h = pairLimit(segs[ij[0]], segs[ij[1]], h);
+            h = pairLimit(segs[ij[0]], segs[ij[1]], h, why);
         }
     }
 
@@ -566,8 +580,13 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     if (vFar*h > skin)
     {
         h = skin/vFar;
+        why = limit::far;
     }
-    return returnReduce(h, minOp<scalar>());
+
+    // The reason of the processor whose limit is the global one
+    const scalar hAll = returnReduce(h, minOp<scalar>());
+    why = returnReduce(h == hAll ? why : label(-1), maxOp<label>());
+    return hAll;
 }
 
 
