@@ -182,10 +182,11 @@ vector halfExtent(const segment& s)
 }
 
 
-//- The velocity of a segment's centre
+//- The velocity of a segment's centre (of a flexible fiber's: its own,
+//  v at x, the centre)
 vector centreVelocity(const segment& s)
 {
-    return s.v + (s.w ^ (0.5*(s.a + s.b) - s.x));
+    return s.flexible ? s.v : s.v + (s.w ^ (0.5*(s.a + s.b) - s.x));
 }
 
 
@@ -700,11 +701,6 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
             S.tauLo > 0
           ? (mag(S.w) + S.gradU)*mag(S.b - S.a)/S.tauLo
           : GREAT/4;
-    };
-    const auto centreVelocity = [](const segment& S)
-    {
-        return
-            S.flexible ? S.v : S.v + (S.w ^ (0.5*(S.a + S.b) - S.x));
     };
     const auto dFluid =
         [](const scalar slip, const scalar slack, const scalar tauHi,
