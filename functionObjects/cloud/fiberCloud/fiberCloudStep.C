@@ -209,7 +209,14 @@ void Foam::fiberCloud::tooManySubSteps
     FatalErrorInFunction
         << "Fiber " << f.id() << " needs " << parts
         << " sub-steps over " << T << " s, at " << f.position()
-        << " in cell " << f.location().celli << ": asked for by ";
+        << " in cell " << f.location().celli << " (speed "
+        << mag(f.velocity()) << " m/s, turning at " << mag(f.omega())
+        << " rad/s"
+        << (
+               interactions_->active() && step_[fi].load.implicit
+             ? ", under implicit contact springs" : ""
+           )
+        << "): asked for by ";
     if (why == subStepStatistics::cell)
     {
         FatalError

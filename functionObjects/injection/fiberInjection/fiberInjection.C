@@ -500,7 +500,8 @@ void inRegion
     const label idBase = set.made.size();
     const label batch = 256;
     const label maxCandidates = 1000*nFibers + 100000;
-    label nCandidates = 0, nRedrawn = 0, nPlaced = 0, nextSlot = 0;
+    label nCandidates = 0, nRedrawn = 0, nOutside = 0, nPlaced = 0;
+    label nextSlot = 0;
     PtrList<fiber> placed(nFibers);
     DynamicList<label> retry;
     while (nPlaced < nFibers)
@@ -542,6 +543,7 @@ void inRegion
             if (!all)
             {
                 nRedrawn += ok[j*m] ? 1 : 0;
+                nOutside += ok[j*m] ? 0 : 1;
                 retry.append(slots[j]);
                 continue;
             }
@@ -556,8 +558,10 @@ void inRegion
         set.add(f, k);
     }
     Info<< "    Fiber set '" << set.name << "' (" << setType << "): "
-        << nFibers << " fibers from " << nCandidates << " candidates, "
-        << nRedrawn << " drawn again (a segment outside the mesh)" << endl;
+        << nFibers << " fibers from " << nCandidates << " candidates in"
+        << " the region's bounding box, drawn again: " << nOutside
+        << " with the centre outside the region, " << nRedrawn
+        << " with a segment outside the mesh" << endl;
 }
 
 //- One fiber set of the injection dictionary: its fibers (made, orig),

@@ -282,8 +282,13 @@ bool Foam::subStepControl::update
     }
     if (inContact)
     {
+        // No error estimate under the springs (the intervals resolve the
+        // contact): the proposal grows with the step, and a step a break
+        // cut short (an eddy's end near a wall: 1e-15 s) does not shrink
+        // it; it did, and the next step then needed 6e10 sub-steps
+        // (channel395, random walk, implicit contacts)
         f.jumped() = false;
-        f.hNext() = h*maxGrowth;
+        f.hNext() = max(f.hNext(), h*maxGrowth);
         return true;
     }
     if (f.jumped())

@@ -544,14 +544,24 @@ void Foam::fiberInteractions::contact::count
 )
 {
     // Distinct fiber pairs, the other fibers each touches; a collision is
-    // a pair that touches and was not close at the last interval (a pair
-    // that rests at a touch, on and off, is one)
+    // a pair that touches and has not touched since it was last apart
+    // (more than a tenth of a diameter beyond touching): a pair that rests
+    // at a touch, on and off, is one, and one that closes slowly is one
+    // when it touches (it was counted only if it had not been within the
+    // tenth at the last interval, so slow approaches were missed)
     HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> seen;
-    HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> before;
-    before.transfer(close_);
+    HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> closeNow;
     for (const FixedList<label, 2>& c : close)
     {
-        close_.insert(c);
+        closeNow.insert(c);
+    }
+    HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> next;
+    for (const FixedList<label, 2>& k : recent_)
+    {
+        if (closeNow.found(k))
+        {
+            next.insert(k);
+        }
     }
     touching_.clear();
     pairs_.clear();
@@ -562,16 +572,18 @@ void Foam::fiberInteractions::contact::count
         {
             continue;
         }
+        next.insert(t);
         touching_(t[0]) = touching_.lookup(t[0], 0) + 1;
         if (t[0] < t[1])
         {
             pairs_.append(t);
-            if (!before.found(t))
+            if (!recent_.found(t))
             {
                 ++nNew;
             }
         }
     }
+    recent_.transfer(next);
     nCollisions_ += returnReduce(nNew, sumOp<label>());
 }
 
@@ -1070,6 +1082,19 @@ void Foam::fiberInteractions::contact::writeFiber
                 << token::SPACE << p.xiMax << token::SPACE << p.vt0;
         }
     }
+    n = 0;
+    for (const FixedList<label, 2>& k : recent_)
+    {
+        n += (k[0] == id);
+    }
+    os << token::SPACE << n;
+    for (const FixedList<label, 2>& k : recent_)
+    {
+        if (k[0] == id)
+        {
+            os << token::SPACE << k;
+        }
+    }
 }
 
 
@@ -1104,6 +1129,13 @@ void Foam::fiberInteractions::contact::readFiber(Istream& is)
             >> p.vt0;
         records_.set(k, p);
     }
+    const label nRecent = readLabel(is);
+    for (label i = 0; i < nRecent; ++i)
+    {
+        FixedList<label, 2> k;
+        is >> k;
+        recent_.insert(k);
+    }
 }
 
 
@@ -1124,6 +1156,11 @@ void Foam::fiberInteractions::contact::writeRestart(Ostream& os) const
     }
     os  << nl << "contactInterval " << hLast_ << token::SPACE << skinNext_
         << token::SPACE << windowSkin_;
+    os  << nl << "contactRecent " << recent_.size();
+    for (const FixedList<label, 2>& k : recent_.sortedToc())
+    {
+        os  << nl << k;
+    }
 }
 
 
@@ -1191,6 +1228,24 @@ void Foam::fiberInteractions::contact::readRestart(Istream& is)
     else if (h.good())
     {
         is.putBack(h);
+    }
+
+    // The pairs that touched and have not been apart since (written since
+    // collisions are counted on them; older files: none)
+    token r(is);
+    if (r.isWord() && r.wordToken() == "contactRecent")
+    {
+        const label nR = readLabel(is);
+        for (label i = 0; i < nR; ++i)
+        {
+            FixedList<label, 2> k;
+            is >> k;
+            recent_.insert(k);
+        }
+    }
+    else if (r.good())
+    {
+        is.putBack(r);
     }
 }
 
