@@ -1100,14 +1100,27 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
             A = qFirst ? &Q : &P;
             B = qFirst ? &P : &Q;
         };
+        // A periodic image of a fiber of this processor stands for that
+        // fiber (a pair across a periodic patch may be found from one side
+        // only: engaging the image engages the fiber)
+        const auto localOf = [&](const segment& S)
+        {
+            if (S.local >= 0)
+            {
+                return S.local;
+            }
+            const auto it = present.cfind(S.fiber);
+            return it.found() ? *it : label(-1);
+        };
         const auto engageBoth = [&](const segment& A, const segment& B)
         {
             bool grew = false;
             for (const segment* sg : {&A, &B})
             {
-                if (sg->local >= 0 && sg->m > 0 && !eng[sg->local])
+                const label li = localOf(*sg);
+                if (li >= 0 && sg->m > 0 && !eng[li])
                 {
-                    eng[sg->local] = true;
+                    eng[li] = true;
                     grew = true;
                 }
             }
@@ -1115,9 +1128,10 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
         };
         const auto isEngaged = [&](const segment& S)
         {
+            const label li = localOf(S);
             return
                 S.m > 0
-             && (S.local >= 0 ? eng[S.local] : engagedIds.found(S.fiber));
+             && (li >= 0 ? eng[li] : engagedIds.found(S.fiber));
         };
         scalar meetKick = 0;
         forAll(near, k)
