@@ -167,7 +167,15 @@ void Foam::functionObjects::fiberTracking::checkFields
     {
         kFromModel_ = true;
         Info<< type() << " " << name() << ": k and epsilon of the random"
-            << " walk from the turbulence model of the case" << endl;
+            << " walk from the turbulence model of the case";
+        if (tm->lookupOrDefault<word>("simulationType", "") == "LES")
+        {
+            // The resolved velocity carries the large eddies: the walk adds
+            // the fluctuation it does not (the subgrid scales)
+            Info<< " (LES " << tm->type() << ": the subgrid k and epsilon,"
+                << " the fluctuation the resolved velocity does not carry)";
+        }
+        Info<< endl;
         return;
     }
     if (tm && !named)
