@@ -770,6 +770,7 @@ void Foam::fiberCloud::interact(const scalar t, const scalar h)
     {
         if (r[fi] != fiberInteraction::role::absent)
         {
+            loads[fi].holdAxial(fibers_[fi]);
             step_[fi].load = std::move(loads[fi]);
         }
     }

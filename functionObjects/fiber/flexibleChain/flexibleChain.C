@@ -264,6 +264,7 @@ void Foam::flexibleChain::addInteraction
 (
     const fiberIntegrator::load& l,
     const point& c,
+    const vector& e,
     const scalar h,
     segmentLoad& ld
 )
@@ -272,18 +273,21 @@ void Foam::flexibleChain::addInteraction
     // implicit springs on the segment's displacement at the step's end,
     // dX + h V, and dashpots on its velocity (fiberIntegrator::load)
     ld.f += l.F;
-    ld.t += l.M - (c ^ l.F);
+    ld.t += l.heldTorque(e, l.M - (c ^ l.F));
     if (!l.implicit)
     {
         return;
     }
+    const tensor A(l.heldRows(e));
+    const tensor At(A.T());
+    const vector dT(At & l.dTheta);
     const scalar tau = l.tau + h;
     ld.A += h*l.Kxx + l.Cxx;
-    ld.B += h*l.Kxt + l.Cxt;
-    ld.C += h*l.Ktx + l.Ctx;
-    ld.D += h*l.Ktt + l.Ctt;
-    ld.f += tau*l.P - (l.Kxx & l.dX) - (l.Kxt & l.dTheta);
-    ld.t += tau*l.Q - (l.Ktx & l.dX) - (l.Ktt & l.dTheta);
+    ld.B += (h*l.Kxt + l.Cxt) & At;
+    ld.C += A & (h*l.Ktx + l.Ctx);
+    ld.D += A & (h*l.Ktt + l.Ctt) & At;
+    ld.f += tau*l.P - (l.Kxx & l.dX) - (l.Kxt & dT);
+    ld.t += A & (tau*l.Q - (l.Ktx & l.dX) - (l.Ktt & dT));
 }
 
 
@@ -328,7 +332,10 @@ void Foam::flexibleChain::advance
         if (segLoads)
         {
             const point c(f.position() + f.segmentOffset(R, i));
-            addInteraction(ext->seg[i], c, h, ld);
+            addInteraction
+            (
+                ext->seg[i], c, f.segmentDirection(R, i), h, ld
+            );
         }
     }
 

@@ -1035,7 +1035,23 @@ void Foam::fiberInteractions::contact::settle
         }
         FixedList<vector, 2>& back = pending_[to];
         back[0] += J;
-        back[1] += p.rThis ^ J;
+
+        // Its moment, save the component about the body's axis of least
+        // inertia (a straight fiber's own axis, a segment's): what is paid
+        // back is the two sides' numerical mismatch, and about that axis
+        // the inertia is (L/d)^2 times smaller than across it.  With
+        // friction the mismatch is tangential, at the surface: paid back
+        // about the axis, it spun heavy fibers in a liquid (pipeCyclic,
+        // Stokes number 0.4) to 10^4 rad/s and 5 m/s in a 1.4 m/s flow
+        const fiberIntegrator::load& l = loads[Q.local];
+        const vector e
+        (
+            Q.flexible && k[1] < label(l.seg.size())
+          ? normalised(Q.b - Q.a)
+          : fibers[Q.local].R() & l.axisBody
+        );
+        const vector MJ(p.rThis ^ J);
+        back[1] += MJ - e*(e & MJ);
     }
     records_.clear();
 }

@@ -127,6 +127,7 @@ void addLoad
     Matrix6& M,
     Vector6& rhs,
     const fiber& f,
+    const tensor& R,
     const scalar c,
     const fiberIntegrator::load& l,
     const vector& dxKnown,
@@ -134,21 +135,27 @@ void addLoad
     const scalar h
 )
 {
+    // The torques about the axis of least inertia held (load::holdAxial)
+    const vector e(R & l.axisBody);
     addBlock(rhs, 0, l.F);
-    addBlock(rhs, 3, l.M - (f.position() ^ l.F));
+    addBlock(rhs, 3, l.heldTorque(e, l.M - (f.position() ^ l.F)));
     if (!l.implicit)
     {
         return;
     }
+    // The springs' torque rows and rotation columns alike, so that they
+    // stay a spring's (symmetric)
+    const tensor A(l.heldRows(e));
+    const tensor At(A.T());
     const vector dX(l.dX + dxKnown);
-    const vector dT(l.dTheta + dthetaKnown);
+    const vector dT(At & (l.dTheta + dthetaKnown));
     const scalar tau = l.tau + h;
     addBlock(M, 0, 0, l.Kxx/c + l.Cxx);
-    addBlock(M, 0, 3, l.Kxt/c + l.Cxt);
-    addBlock(M, 3, 0, l.Ktx/c + l.Ctx);
-    addBlock(M, 3, 3, l.Ktt/c + l.Ctt);
+    addBlock(M, 0, 3, (l.Kxt/c + l.Cxt) & At);
+    addBlock(M, 3, 0, A & (l.Ktx/c + l.Ctx));
+    addBlock(M, 3, 3, A & (l.Ktt/c + l.Ctt) & At);
     addBlock(rhs, 0, tau*l.P - (l.Kxx & dX) - (l.Kxt & dT));
-    addBlock(rhs, 3, tau*l.Q - (l.Ktx & dX) - (l.Ktt & dT));
+    addBlock(rhs, 3, A & (tau*l.Q - (l.Ktx & dX) - (l.Ktt & dT)));
 }
 
 } // End anonymous namespace
@@ -179,11 +186,60 @@ Foam::fiberIntegrator::load::load()
     sTau(0),
     sV(Zero),
     sW(Zero),
-    H(0)
+    H(0),
+    held(false),
+    axis0(Zero),
+    axisBody(Zero),
+    Maxis(0)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fiberIntegrator::load::holdAxial(const fiber& f)
+{
+    // A rigid fiber: the body's axis of least inertia (a straight fiber's
+    // axis), from the inertia in the body frame
+    const tensor R(f.R());
+    const symmTensor I0(f.inertia(tensor::I));
+    Eigen::Matrix3d J;
+    J << I0.xx(), I0.xy(), I0.xz(),
+         I0.xy(), I0.yy(), I0.yz(),
+         I0.xz(), I0.yz(), I0.zz();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(J);
+    const Eigen::Vector3d e(eig.eigenvectors().col(0));
+    held = true;
+    axisBody = vector(e(0), e(1), e(2));
+    axis0 = R & axisBody;
+    Maxis = axis0 & (M - (f.position() ^ F));
+
+    // A flexible fiber's segments: each its own axis
+    forAll(seg, i)
+    {
+        load& s = seg[i];
+        const point c(f.position() + f.segmentOffset(R, label(i)));
+        s.held = true;
+        s.axis0 = f.segmentDirection(R, label(i));
+        s.Maxis = s.axis0 & (s.M - (c ^ s.F));
+    }
+}
+
+
+Foam::vector Foam::fiberIntegrator::load::heldTorque
+(
+    const vector& e,
+    const vector& Te
+) const
+{
+    return held ? Te + e*(Maxis - (e & Te)) : Te;
+}
+
+
+Foam::tensor Foam::fiberIntegrator::load::heldRows(const vector& e) const
+{
+    return held ? tensor::I + e*(axis0 - e) : tensor::I;
+}
+
 
 void Foam::fiberIntegrator::load::addImplicit
 (
@@ -223,7 +279,11 @@ void Foam::fiberIntegrator::load::transform(const vectorTensorTransform& T)
         {
             *t = R & *t & R.T();
         }
-        for (vector* v : {&P, &Q, &dX, &dTheta, &sX, &sTheta, &sV, &sW})
+        for
+        (
+            vector* v
+          : {&P, &Q, &dX, &dTheta, &sX, &sTheta, &sV, &sW, &axis0}
+        )
         {
             *v = R & *v;
         }
@@ -407,12 +467,21 @@ void Foam::fiberIntegrator::solve
 
     // Inertia and gyroscopic term w x (I wHat), linear in w
     addBlock(M, 0, 0, (c*m)*tensor::I);
-    addBlock(M, 3, 3, c*I - fiberHydrodynamics::crossMatrix(I & wHat));
+    addBlock
+    (
+        M, 3, 3,
+        c*I
+      + 0.5
+       *(
+            (fiberHydrodynamics::crossMatrix(wHat) & I)
+          - fiberHydrodynamics::crossMatrix(I & wHat)
+        )
+    );
     addBlock(rhs, 0, bV + m*g);
     addBlock(rhs, 3, bW);
     if (ext)
     {
-        addLoad(M, rhs, f, c, *ext, dxKnown, dthetaKnown, h);
+        addLoad(M, rhs, f, R, c, *ext, dxKnown, dthetaKnown, h);
     }
 
     fiberHydrodynamics::segmentLaw k;
@@ -478,7 +547,9 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE << l.tau << token::SPACE << l.sX
         << token::SPACE << l.sTheta << token::SPACE << l.sTau
         << token::SPACE << l.sV << token::SPACE << l.sW
-        << token::SPACE << l.H << token::SPACE << label(l.seg.size());
+        << token::SPACE << l.H << token::SPACE << l.held
+        << token::SPACE << l.axis0 << token::SPACE << l.axisBody
+        << token::SPACE << l.Maxis << token::SPACE << label(l.seg.size());
     for (const fiberIntegrator::load& s : l.seg)
     {
         os << token::SPACE << s;
@@ -504,7 +575,7 @@ Foam::Istream& Foam::operator>>(Istream& is, fiberIntegrator::load& l)
             >> l.Ctt >> l.P >> l.Q;
     }
     is  >> l.dX >> l.dTheta >> l.tau >> l.sX >> l.sTheta >> l.sTau >> l.sV
-        >> l.sW >> l.H;
+        >> l.sW >> l.H >> l.held >> l.axis0 >> l.axisBody >> l.Maxis;
     l.seg.resize(readLabel(is));
     for (fiberIntegrator::load& s : l.seg)
     {

@@ -46,7 +46,8 @@ void Foam::fiberIntegrators::implicitEuler::advance
 ) const
 {
     // Eq. 14-15: c = 1/dt, history m V_n/dt and I w_n/dt, gyroscopic
-    // term with w_n, everything in the configuration of level n
+    // term with w_n (symmetric, see fiberIntegrator.H), everything in the
+    // configuration of level n
     const tensor R(f.R());
     vector V, w;
     solve
