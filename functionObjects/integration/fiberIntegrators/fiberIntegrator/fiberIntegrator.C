@@ -465,7 +465,7 @@ void Foam::fiberIntegrator::solve
     Matrix6 M(Matrix6::Zero());
     Vector6 rhs(Vector6::Zero());
 
-    // Inertia and gyroscopic term w x (I wHat), linear in w
+    // Inertia and gyroscopic term (w x I wHat + wHat x I w)/2, linear in w
     addBlock(M, 0, 0, (c*m)*tensor::I);
     addBlock
     (
