@@ -198,6 +198,13 @@ Foam::fiberIntegrator::load::load()
 
 void Foam::fiberIntegrator::load::holdAxial(const fiber& f)
 {
+    // No load (most fibers of a dilute case): nothing to hold, and no
+    // eigenvalue problem per fiber and interval
+    if (!implicit && seg.empty() && magSqr(F) == 0 && magSqr(M) == 0)
+    {
+        return;
+    }
+
     // A rigid fiber: the body's axis of least inertia (a straight fiber's
     // axis), from the inertia in the body frame
     const tensor R(f.R());
