@@ -2058,7 +2058,13 @@ void testSubStepStatistics()
     for (label k = 0; k < n; ++k)
     {
         const scalar u = -9 + 6*(k + 0.5)/n;
-        (k % 2 ? a : b).add(k % subStepStatistics::nLimits, std::pow(10, u));
+        // The own limits' share: a break cut every fifth sub-step to a
+        // quarter of what the limits allowed, the others are whole
+        (k % 2 ? a : b).add
+        (
+            k % subStepStatistics::nLimits, std::pow(10, u),
+            k % 5 == 4 ? 0.25 : 1
+        );
     }
     a += b;
     a.addRebound();
@@ -2089,11 +2095,17 @@ void testSubStepStatistics()
      && a.hMinLimit() == subStepStatistics::rule,
         fmt(a.hMin(), std::pow(10, -9 + 3.0/n), a.hMinLimit())
     );
+    check
+    (
+        "subStepStatistics.ownLimits",
+        relErr(a.nOwn(), 0.8*n + 0.2*n*0.25) < 1e-12,
+        fmt(a.nOwn(), 0.85*n, a.nOwn() - 0.85*n)
+    );
     a.clear();
     check
     (
         "subStepStatistics.clear",
-        a.n() == 0 && a.median() == 0 && a.hMin() == 0,
+        a.n() == 0 && a.median() == 0 && a.hMin() == 0 && a.nOwn() == 0,
         fmt(a.n(), 0, a.hMin())
     );
 }

@@ -614,7 +614,8 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
             stepState
             {
                 tLeft > 0 ? status::running : status::done,
-                tLeft, 0, 1, -1, -1, -1, fiberIntegrator::load(), engaged
+                tLeft, 0, 1, -1, -1, -1, fiberIntegrator::load(), engaged,
+                0
             };
     }
     counters_.beginStep();

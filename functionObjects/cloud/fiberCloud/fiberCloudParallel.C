@@ -206,7 +206,7 @@ void Foam::fiberCloud::receive(const label proci)
             stepState
             {
                 tLeft > tStopLeft_ ? status::running : status::done,
-                tLeft, nSub, unfollowed, -1, -1, -1, load, inIntervals_
+                tLeft, nSub, unfollowed, -1, -1, -1, load, inIntervals_, 0
             }
         );
 

@@ -255,6 +255,7 @@ bool Foam::fiberCloud::prepare
     }
     fiber& f = fibers_[fi];
     const scalar rate = subStepRate(fi, s, why);
+    step_[fi].rate = rate;
 
     // The time to the next break: the end of the step (of the interval),
     // or the end of the fiber's eddy if that comes first (Eq. 23: an eddy
@@ -369,7 +370,7 @@ void Foam::fiberCloud::finish
     stepState& st = step_[fi];
     ++st.nSub;
     f.countSubStep(why);
-    stepStats_.add(why, h);
+    stepStats_.add(why, h, h*st.rate);
     st.tLeft -= h;
     if (st.tLeft - tStopLeft_ <= 1e-9*h)
     {

@@ -46,15 +46,22 @@ Foam::subStepStatistics::subStepStatistics()
     histogram_((maxDecade - minDecade)*binsPerDecade, Zero),
     hMin_(GREAT),
     hMinLimit_(stepEnd),
-    nRebounds_(0)
+    nRebounds_(0),
+    nOwn_(0)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::subStepStatistics::add(const label l, const scalar h)
+void Foam::subStepStatistics::add
+(
+    const label l,
+    const scalar h,
+    const scalar own
+)
 {
     n_[l] += 1;
+    nOwn_ += own;
     const scalar x =
         h > 0 ? (std::log10(h) - minDecade)*binsPerDecade : scalar(-1);
     const label bin =
@@ -84,6 +91,7 @@ void Foam::subStepStatistics::operator+=(const subStepStatistics& s)
         hMinLimit_ = s.hMinLimit_;
     }
     nRebounds_ += s.nRebounds_;
+    nOwn_ += s.nOwn_;
 }
 
 
@@ -107,6 +115,7 @@ void Foam::subStepStatistics::reduce()
     Pstream::listCombineGather(histogram_, plusEqOp<scalar>());
     Pstream::listCombineScatter(histogram_);
     Foam::reduce(nRebounds_, sumOp<scalar>());
+    Foam::reduce(nOwn_, sumOp<scalar>());
 
     // The smallest with its limit: the processor with the smallest says
     const scalar hMin = returnReduce(hMin_, minOp<scalar>());
@@ -176,7 +185,9 @@ void Foam::subStepStatistics::report
     }
     os  << "; median " << median() << " s, smallest " << hMin()
         << " s (" << name(hMinLimit_, ruleName).c_str() << "); rebounds "
-        << count(nRebounds_).c_str();
+        << count(nRebounds_).c_str()
+        << "; without breaks the own limits would take "
+        << count(nOwn_).c_str();
 }
 
 
