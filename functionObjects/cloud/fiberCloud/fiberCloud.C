@@ -792,7 +792,6 @@ void Foam::fiberCloud::settle()
     }
     const std::clock_t c0 = std::clock();
     interactions_->settle(fibers_, r, loads);
-    interactions_->kick(fibers_, r);
     cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
     forAll(r, fi)
     {

@@ -774,44 +774,6 @@ void Foam::fiberInteractions::contact::payBack
 }
 
 
-void Foam::fiberInteractions::contact::kick
-(
-    PtrList<fiber>& fibers,
-    const UList<role>& roles
-)
-{
-    // Paid back over the next interval as a force, as before for a
-    // flexible fiber's segments, the sum of a sticking pair's impulses was
-    // resisted by that interval's springs, anchored anew, and lasted as
-    // long as the contact: a pair stuck in linear drag kept 5 % more
-    // momentum than the drag allows (scripts/frictionMomentum)
-    if (pending_.empty())
-    {
-        return;
-    }
-    forAll(fibers, fi)
-    {
-        if (roles[fi] == role::absent || fibers[fi].flexible())
-        {
-            continue;
-        }
-        fiber& f = fibers[fi];
-        const FixedList<label, 2> key{f.id(), -1};
-        const auto it = pending_.cfind(key);
-        if (!it.found())
-        {
-            continue;
-        }
-        const vector J((*it)[0]);
-        const vector MJ((*it)[1]);
-        f.setVelocity(f.velocity() + J/f.mass());
-        f.setOmega(f.omega() + (inv(f.inertia(f.R())) & MJ));
-        f.clearHistory();
-        pending_.erase(key);
-    }
-}
-
-
 void Foam::fiberInteractions::contact::pairsInReach
 (
     const PtrList<fiber>& fibers,
@@ -1011,9 +973,7 @@ void Foam::fiberInteractions::contact::settle
     // Each implicit contact's two sides took impulses J_A and J_B of
     // which the sum is not zero where the partners did not move as each
     // side predicted: each gets -(J_A + J_B)/2 back at the contact point
-    // (kick: a rigid fiber at once; payBack: a flexible fiber's segment
-    // over the next interval), so the pair's impulses are equal and
-    // opposite
+    // at the next interval, so the pair's impulses are equal and opposite
     // Only the fibers of a contact of the interval take part, and the
     // fixed ones (each moving side of a pair has its record, a fixed one
     // none: so a partner on another processor is there too, within reach
