@@ -16,6 +16,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fiberCloud.H"
+#include "openfoamCompat.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -56,8 +57,7 @@ void Foam::fiberCloud::locateInjected
             }
         }
     }
-    Pstream::listCombineGather(segFound, maxEqOp<label>());
-    Pstream::listCombineScatter(segFound);
+    fiberCompat::listCombineReduce(segFound, maxEqOp<label>());
 
     List<point> pts;
     forAll(all, fi)
@@ -76,10 +76,8 @@ void Foam::fiberCloud::locateInjected
         }
     }
 
-    Pstream::listCombineGather(owner, minEqOp<label>());
-    Pstream::listCombineScatter(owner);
-    Pstream::listCombineGather(segFound, maxEqOp<label>());
-    Pstream::listCombineScatter(segFound);
+    fiberCompat::listCombineReduce(owner, minEqOp<label>());
+    fiberCompat::listCombineReduce(segFound, maxEqOp<label>());
 }
 
 

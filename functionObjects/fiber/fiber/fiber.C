@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiber.H"
+#include "openfoamCompat.H"
 #include "spheroidResistance.H"
 #include "mathematicalConstants.H"
 
@@ -359,7 +360,7 @@ void Foam::fiber::transform(const vectorTensorTransform& T)
         return;
     }
     const tensor& R = T.R();
-    q_ = normalize(quaternion(R)*q_);
+    q_ = fiberCompat::normalised(quaternion(R)*q_);
     v_ = R & v_;
     omega_ = R & omega_;
     dxPrev_ = R & dxPrev_;
@@ -463,7 +464,7 @@ void Foam::fiber::moveBy
     x_ += dx;
 
     // Exact rotation by the angle |dtheta| about dtheta
-    q_ = normalize(rotationQuaternion(dtheta)*q_);
+    q_ = fiberCompat::normalised(rotationQuaternion(dtheta)*q_);
 
     dxPrev_ = dx;
     dthetaPrev_ = dtheta;

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "flexibleChain.H"
+#include "openfoamCompat.H"
 #include "fiberHydrodynamics.H"
 #include "mathematicalConstants.H"
 
@@ -544,7 +545,7 @@ void Foam::flexibleChain::set
 )
 {
     r_[i] = r;
-    q_[i] = normalize(q);
+    q_[i] = fiberCompat::normalised(q);
     v_[i] = v;
     w_[i] = w;
     zCurrent_ = false;
@@ -923,7 +924,11 @@ void Foam::flexibleChain::step
         v_[i] = B.V[i];
         w_[i] = B.W[i];
         r_[i] += h*B.V[i];
-        q_[i] = normalize(fiber::rotationQuaternion(h*B.W[i])*q_[i]);
+        q_[i] =
+            fiberCompat::normalised
+            (
+                fiber::rotationQuaternion(h*B.W[i])*q_[i]
+            );
     }
     updateDirections();
     closeJoints(keepAngularMomentum);

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberInjection.H"
+#include "openfoamCompat.H"
 #include "flexibleChain.H"
 #include "periodicImages.H"
 #include "Switch.H"
@@ -461,8 +462,7 @@ void regionCandidates
             }
         }
     }
-    Pstream::listCombineGather(ok, maxEqOp<label>());
-    Pstream::listCombineScatter(ok);
+    fiberCompat::listCombineReduce(ok, maxEqOp<label>());
 }
 
 

@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberPatchInjection.H"
+#include "openfoamCompat.H"
 #include "surfaceFields.H"
 #include "counterRandom.H"
 #include "keywordCheck.H"
@@ -79,16 +80,11 @@ void Foam::fiberPatchInjection::gatherTriangles
     allShare[Pstream::myProcNo()] = myShare;
     allFace[Pstream::myProcNo()] = myFace;
     nFaces[Pstream::myProcNo()] = pp.size();
-    Pstream::gatherList(allTri);
-    Pstream::scatterList(allTri);
-    Pstream::gatherList(allN);
-    Pstream::scatterList(allN);
-    Pstream::gatherList(allShare);
-    Pstream::scatterList(allShare);
-    Pstream::gatherList(allFace);
-    Pstream::scatterList(allFace);
-    Pstream::gatherList(nFaces);
-    Pstream::scatterList(nFaces);
+    fiberCompat::allGatherList(allTri);
+    fiberCompat::allGatherList(allN);
+    fiberCompat::allGatherList(allShare);
+    fiberCompat::allGatherList(allFace);
+    fiberCompat::allGatherList(nFaces);
 
     label n = 0;
     for (const List<FixedList<point, 3>>& t : allTri)
@@ -183,8 +179,7 @@ void Foam::fiberPatchInjection::weighByFlux(const polyMesh& mesh)
     // The patch's face fluxes of all processors, in processor order
     List<scalarList> allPhi(Pstream::nProcs());
     allPhi[Pstream::myProcNo()] = phiPtr->boundaryField()[patchi_];
-    Pstream::gatherList(allPhi);
-    Pstream::scatterList(allPhi);
+    fiberCompat::allGatherList(allPhi);
     DynamicList<scalar> phi;
     for (const scalarList& p : allPhi)
     {

@@ -11,9 +11,9 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "subStepStatistics.H"
+#include "openfoamCompat.H"
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
-#include "PstreamCombineReduceOps.H"
 #include "Ostream.H"
 #include <cmath>
 #include <string>
@@ -106,14 +106,12 @@ void Foam::subStepStatistics::reduce()
     {
         n[l] = n_[l];
     }
-    Pstream::listCombineGather(n, plusEqOp<scalar>());
-    Pstream::listCombineScatter(n);
+    fiberCompat::listCombineReduce(n, plusEqOp<scalar>());
     forAll(n_, l)
     {
         n_[l] = n[l];
     }
-    Pstream::listCombineGather(histogram_, plusEqOp<scalar>());
-    Pstream::listCombineScatter(histogram_);
+    fiberCompat::listCombineReduce(histogram_, plusEqOp<scalar>());
     Foam::reduce(nRebounds_, sumOp<scalar>());
     Foam::reduce(nOwn_, sumOp<scalar>());
 

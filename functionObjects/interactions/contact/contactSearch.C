@@ -15,6 +15,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "contact.H"
+#include "openfoamCompat.H"
 #include "fiberTracker.H"
 #include "periodicImages.H"
 #include "PstreamBuffers.H"
@@ -949,8 +950,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
             mine[2*k] = hits[k].first;
             mine[2*k + 1] = hits[k].second;
         }
-        Pstream::gatherList(all);
-        Pstream::scatterList(all);
+        fiberCompat::allGatherList(all);
         hits.clear();
         for (const List<scalar>& l : all)
         {
@@ -1199,8 +1199,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
                 }
             }
             ids[Pstream::myProcNo()] = std::move(mine);
-            Pstream::gatherList(ids);
-            Pstream::scatterList(ids);
+            fiberCompat::allGatherList(ids);
             label nNew = 0;
             for (const labelList& l : ids)
             {
@@ -1376,8 +1375,7 @@ void Foam::fiberInteractions::contact::addGhosts
         own.add(s.a);
         own.add(s.b);
     }
-    Pstream::gatherList(parts);
-    Pstream::scatterList(parts);
+    fiberCompat::allGatherList(parts);
 
     if (!ghostBufs_)
     {

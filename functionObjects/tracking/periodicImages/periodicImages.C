@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "periodicImages.H"
+#include "openfoamCompat.H"
 #include "fiberTracker.H"
 #include "cyclicPolyPatch.H"
 #include "cyclicAMIPolyPatch.H"
@@ -77,8 +78,7 @@ List<vectorTensorTransform> distinctTransforms
     }
     List<List<vectorTensorTransform>> all(Pstream::nProcs());
     all[Pstream::myProcNo()] = mine;
-    Pstream::gatherList(all);
-    Pstream::scatterList(all);
+    fiberCompat::allGatherList(all);
 
     // Distinct ones
     DynamicList<vectorTensorTransform> base;
