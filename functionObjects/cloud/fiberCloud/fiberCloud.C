@@ -11,6 +11,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "fiberCloud.H"
+#include "openfoamCompat.H"
 #include "keywordCheck.H"
 #include "processorPolyPatch.H"
 #include "wallPolyPatch.H"
@@ -48,14 +49,13 @@ word inertialMode(const dictionary& dict)
     {
         return w;
     }
-    const Switch sw(w, true);
-    if (!sw.valid())
+    if (!fiberCompat::isSwitch(w))
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'inertialDrag' must be auto, on or off, not '" << w
             << "'" << exit(FatalIOError);
     }
-    return sw ? "on" : "off";
+    return Switch(w) ? "on" : "off";
 }
 
 
@@ -236,6 +236,41 @@ Foam::fiberCloud::fiberCloud
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fiberCloud::lightestBody() const
+{
+    scalar m = GREAT;
+    for (const fiber& f : fibers_)
+    {
+        m = min(m, f.mass());
+        for (label i = 0; f.flexible() && i < f.nSegments(); ++i)
+        {
+            m = min(m, f.segmentMass(i));
+        }
+    }
+    for (const fiberPatchInjection& feed : feeds_)
+    {
+        m = min(m, feed.sizes().lightestMass(setE_[feed.setIndex()] > 0));
+    }
+    return returnReduce(m, minOp<scalar>());
+}
+
+
+void Foam::fiberCloud::checkInteractionCost
+(
+    const dictionary& dict,
+    const scalar dt
+) const
+{
+    if (interactions_->active())
+    {
+        interactions_->checkCost
+        (
+            dict.subDict("interactions"), lightestBody(), dt
+        );
+    }
+}
+
 
 void Foam::fiberCloud::readWallRule(const dictionary& dict)
 {

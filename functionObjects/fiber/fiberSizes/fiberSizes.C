@@ -15,6 +15,7 @@ License
 #include "counterRandom.H"
 #include "keywordCheck.H"
 #include "spheroidResistance.H"
+#include "mathematicalConstants.H"
 
 #include <cmath>
 
@@ -193,6 +194,15 @@ Foam::fiberSizes::size Foam::fiberSizes::draw
 Foam::scalar Foam::fiberSizes::maxFiberLength() const
 {
     return std::lround(maxValue(0))*maxValue(1);
+}
+
+
+Foam::scalar Foam::fiberSizes::lightestMass(const bool segment) const
+{
+    const label n =
+        segment ? 1 : max(label(1), label(std::lround(minValue(0))));
+    return
+        rho_*constant::mathematical::pi/4*sqr(minValue(2))*minValue(1)*n;
 }
 
 

@@ -708,7 +708,7 @@ void Foam::functionObjects::fiberTracking::createContactFiles()
     {
         return;
     }
-    contactFilePtr_ = createFile("fiberContacts");
+    contactFilePtr_ = newFileAtStart("fiberContacts");
     writeHeader
     (
         contactFilePtr_(),
@@ -722,7 +722,7 @@ void Foam::functionObjects::fiberTracking::createContactFiles()
     );
     contactFilePtr_() << endl;
 
-    contactCountFilePtr_ = createFile("fiberContactCounts");
+    contactCountFilePtr_ = newFileAtStart("fiberContactCounts");
     writeHeader
     (
         contactCountFilePtr_(),
@@ -737,7 +737,7 @@ void Foam::functionObjects::fiberTracking::createContactFiles()
     writeCommented(contactCountFilePtr_(), columns);
     contactCountFilePtr_() << endl;
 
-    flocSizeFilePtr_ = createFile("fiberFlocSizes");
+    flocSizeFilePtr_ = newFileAtStart("fiberFlocSizes");
     writeHeader
     (
         flocSizeFilePtr_(),
@@ -914,7 +914,7 @@ Foam::functionObjects::fiberTracking::fiberTracking
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name, "fiberStatistics", dict),
+    fiberCompat::writeFile(mesh_, name, "fiberStatistics", dict),
     UName_("U"),
     rhoInf_(0),
     nu_(-1),
@@ -1008,6 +1008,7 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
     readTimeControl(dict);
     makeCloud(dict, readGravity(dict));
     reportModels(dict);
+    cloud_->checkInteractionCost(dict, firstStep());
 
     // The fields exist now, except in post-processing, where the solver
     // builds them for each selected time (checked at the first execute)
@@ -1156,6 +1157,25 @@ Foam::vector Foam::functionObjects::fiberTracking::readGravity
 }
 
 
+Foam::scalar Foam::functionObjects::fiberTracking::firstStep() const
+{
+    if (steady_)
+    {
+        return timePerIteration_;
+    }
+    if (functionObject::postProcess)
+    {
+        // An output interval, or unknown (the selected times' spacing)
+        return
+            duration_ > 0
+          ? duration_
+           /max(1, label(std::ceil(duration_/outputInterval_*(1 - 1e-9))))
+          : 0;
+    }
+    return time_.deltaTValue();
+}
+
+
 void Foam::functionObjects::fiberTracking::makeCloud
 (
     const dictionary& dict,
@@ -1280,7 +1300,7 @@ void Foam::functionObjects::fiberTracking::createFiles
     (
         "Time id cx cy cz px py pz vx vy vz wx wy wz chord"
     );
-    stateFilePtr_ = createFile("fiberState");
+    stateFilePtr_ = newFileAtStart("fiberState");
     writeHeader
     (
         stateFilePtr_(),
@@ -1292,7 +1312,7 @@ void Foam::functionObjects::fiberTracking::createFiles
 
     if (cloud_->wallInteraction() == fiberCloud::wallRule::deposit)
     {
-        depositFilePtr_ = createFile("fiberDeposits");
+        depositFilePtr_ = newFileAtStart("fiberDeposits");
         writeHeader(depositFilePtr_(), "Deposited fibers (fiberTracking)");
         writeCommented(depositFilePtr_(), stateColumns);
         depositFilePtr_() << endl;
@@ -1309,7 +1329,7 @@ void Foam::functionObjects::fiberTracking::createFiles
     const wordList& sets = cloud_->setNames();
     if (sets.size() > 1)
     {
-        setFilePtr_ = createFile("fiberSets");
+        setFilePtr_ = newFileAtStart("fiberSets");
         OFstream& os = setFilePtr_();
         writeHeader(os, "Fibers per set (fiberTracking)");
         string columns("Time");
@@ -1334,7 +1354,7 @@ void Foam::functionObjects::fiberTracking::createCloudFiles
 {
     if (cloud_->coupling())
     {
-        momentumFilePtr_ = createFile("momentumExchange");
+        momentumFilePtr_ = newFileAtStart("momentumExchange");
         OFstream& os = momentumFilePtr_();
         writeHeader
         (
@@ -1354,7 +1374,7 @@ void Foam::functionObjects::fiberTracking::createCloudFiles
 
     if (cloud_->loggingEvents())
     {
-        eventFilePtr_ = createFile("fiberEvents");
+        eventFilePtr_ = newFileAtStart("fiberEvents");
         OFstream& os = eventFilePtr_();
         writeHeader
         (
@@ -1373,7 +1393,7 @@ void Foam::functionObjects::fiberTracking::createCloudFiles
     const labelList& outlets = cloud_->outlets();
     if (outlets.size())
     {
-        outletFilePtr_ = createFile("fiberOutlets");
+        outletFilePtr_ = newFileAtStart("fiberOutlets");
         OFstream& os = outletFilePtr_();
         writeHeader(os, "Fibers escaped per outlet patch (fiberTracking)");
         string columns("Time");

@@ -19,6 +19,8 @@ License
 #include "Switch.H"
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -134,6 +136,10 @@ vector normalTo(const vector& v)
 }
 
 } // End anonymous namespace
+
+
+const Foam::scalar
+Foam::fiberInteractions::contact::maxIntervalsPerStep = 1e6;
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -598,6 +604,45 @@ Foam::scalar Foam::fiberInteractions::contact::contactTime
     return
         constant::mathematical::pi
        /std::sqrt(kn_/m*(1 - sqr(zeta_)));
+}
+
+
+void Foam::fiberInteractions::contact::checkCost
+(
+    const dictionary& dict,
+    const scalar m,
+    const scalar dt
+) const
+{
+    if (implicit_ || !(m < GREAT) || !(dt > 0))
+    {
+        return;
+    }
+    const scalar tc = contactTime(m/8);
+    const scalar n = std::ceil(dt*contactSteps_/tc*(1 - 1e-9));
+    Info<< "    Explicit contacts: contact time " << tc << " s (lightest"
+        << " body " << m << " kg, k_n " << kn_ << " N/m): a step of " << dt
+        << " s takes " << n << " intervals of the fibers that touch"
+        << endl;
+    if (n > maxIntervalsPerStep)
+    {
+        // The stiffness that gives the limit, to two digits
+        std::ostringstream kMax;
+        kMax << std::setprecision(2) << kn_*sqr(maxIntervalsPerStep/n);
+        FatalIOErrorInFunction(dict)
+            << "Entry 'stiffness' " << kn_ << " N/m: the contact time of"
+            << " the lightest pair (body of " << m << " kg) is " << tc
+            << " s, and 'contactSteps' " << contactSteps_ << " intervals"
+            << " per contact time make " << n << " intervals in one step"
+            << " of " << dt << " s wherever fibers touch (the limit is "
+            << maxIntervalsPerStep << ", already some ten seconds of CPU"
+            << " per step for a single pair).  Lower 'stiffness' (the"
+            << " intervals go with its square root: " << kMax.str().c_str()
+            << " N/m gives the limit), lower 'contactSteps', or use"
+            << " 'implicit on' (intervals set by how fast pairs approach,"
+            << " not by the contact time; collisions inelastic)"
+            << exit(FatalIOError);
+    }
 }
 
 
