@@ -914,7 +914,9 @@ Foam::functionObjects::fiberTracking::fiberTracking
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    fiberCompat::writeFile(mesh_, name, "fiberStatistics", dict),
+    // fiberStatistics.dat is made with the others (createFiles), after
+    // the files of an earlier run from the same time are gone
+    fiberCompat::writeFile(mesh_, name, "fiberStatistics", true),
     UName_("U"),
     rhoInf_(0),
     nu_(-1),
@@ -1281,11 +1283,59 @@ void Foam::functionObjects::fiberTracking::readCellFields
 }
 
 
+void Foam::functionObjects::fiberTracking::replaceEarlierRun() const
+{
+    // The .dat files this object writes, and the <name>_<time>.dat that
+    // writeFile makes beside one that exists
+    static const wordList names
+    ({
+        "fiberStatistics", "fiberState", "fiberDeposits", "fiberSets",
+        "momentumExchange", "fiberEvents", "fiberOutlets", "fiberContacts",
+        "fiberContactCounts", "fiberFlocSizes"
+    });
+    const fileName dir(startTimeDir());
+    if (!isDir(dir))
+    {
+        return;
+    }
+    wordList removed;
+    for (const fileName& f : readDir(dir, fileName::FILE))
+    {
+        for (const word& n : names)
+        {
+            const bool ours =
+                f == n + ".dat"
+             || (
+                    f.size() > n.size() + 5
+                 && f.compare(0, n.size() + 1, n + "_") == 0
+                 && f.compare(f.size() - 4, 4, ".dat") == 0
+                );
+            if (ours && rm(dir/f))
+            {
+                removed.append(f);
+            }
+        }
+    }
+    if (isDir(dir/"vtk") && rmDir(dir/"vtk"))
+    {
+        removed.append("vtk/");
+    }
+    if (removed.size())
+    {
+        Info<< "    Output of an earlier run from the same time replaced"
+            << " in " << dir << ": " << removed << endl;
+    }
+}
+
+
 void Foam::functionObjects::fiberTracking::createFiles
 (
     const dictionary& dict
 )
 {
+    // Every file of this run in one folder, none of an earlier one
+    replaceEarlierRun();
+    resetFile("fiberStatistics");
     OFstream& os = file();
     writeHeader(os, "Rigid fiber statistics (fiberTracking)");
     writeCommented
@@ -1322,7 +1372,7 @@ void Foam::functionObjects::fiberTracking::createFiles
     {
         vtkWriter_.reset
         (
-            new fiberVtkWriter(baseTimeDir()/"vtk", name())
+            new fiberVtkWriter(startTimeDir()/"vtk", name())
         );
     }
 
