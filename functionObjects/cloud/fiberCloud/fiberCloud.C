@@ -112,6 +112,15 @@ fiberHydrodynamics hydrodynamicsFrom
     const scalar rhoFluid
 )
 {
+    if (inertialMode(dict) != "auto")
+    {
+        keywordCheck::noEffect
+        (
+            dict, "inertialDragBound",
+            "with inertialDrag " + inertialMode(dict) + " (it bounds the"
+            " drag that inertialDrag auto leaves out)"
+        );
+    }
     return fiberHydrodynamics
     (
         rhoFluid,
@@ -283,6 +292,15 @@ void Foam::fiberCloud::readWallRule(const dictionary& dict)
             << exit(FatalIOError);
     }
     wallRule_ = wallRuleNames[rule];
+    if (wallRule_ == wallRule::deposit)
+    {
+        keywordCheck::noEffect
+        (
+            dict, "restitution",
+            "with wallInteraction deposit (a fiber that reaches a wall"
+            " stays there)"
+        );
+    }
 
     if (restitution_ < 0 || restitution_ > 1)
     {

@@ -183,6 +183,14 @@ label nFibersOf(const dictionary& setDict)
 vector directionOf(const dictionary& setDict, bool& fixed)
 {
     fixed = setDict.found("direction");
+    if (fixed)
+    {
+        keywordCheck::noEffect
+        (
+            setDict, "planeNormal",
+            "with 'direction' (every fiber of the set takes that direction)"
+        );
+    }
     return
         fixed
       ? keywordCheck::unitVector(setDict, "direction")

@@ -224,6 +224,15 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
     }
     implicit_ = dict.getOrDefault<Switch>("implicit", false);
     maxApproach_ = keywordCheck::positive(dict, "maxApproach", 0.25);
+    keywordCheck::noEffect
+    (
+        dict, implicit_ ? "contactSteps" : "maxApproach",
+        implicit_
+      ? "with implicit on (the intervals follow the approach of pairs,"
+        " maxApproach)"
+      : "with explicit contacts (implicit off: the intervals resolve the"
+        " contact time, contactSteps)"
+    );
     const dictionary* cohesionDict =
         keywordCheck::optionalSubDict
         (

@@ -115,6 +115,22 @@ Foam::scalar Foam::keywordCheck::positive
 }
 
 
+void Foam::keywordCheck::noEffect
+(
+    const dictionary& dict,
+    const word& key,
+    const std::string& why
+)
+{
+    if (dict.found(key, keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' has no effect " << why.c_str()
+            << "; remove it" << exit(FatalIOError);
+    }
+}
+
+
 Foam::vector Foam::keywordCheck::unitVector
 (
     const dictionary& dict,
