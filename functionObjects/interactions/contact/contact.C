@@ -765,10 +765,16 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
         // the step
         hMax = dt/max(1, label(std::ceil(dt*contactSteps_/tc*(1 - 1e-9))));
     }
-    const scalar h =
+    scalar h =
         hMax < tLeft*(1 - 1e-9)
       ? tLeft/std::ceil(tLeft/hMax*(1 - 1e-9))
       : tLeft;
+    if (!implicit_)
+    {
+        // Ended at a graze within it, so that the next interval's start
+        // sees the touch
+        h = sweptInterval(fibers, roles, h);
+    }
     if (implicit_)
     {
         skinNext_ = 3*vFar*h;

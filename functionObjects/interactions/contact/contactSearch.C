@@ -452,6 +452,90 @@ Foam::scalar Foam::fiberInteractions::contact::slideLimit
 }
 
 
+Foam::scalar Foam::fiberInteractions::contact::sweepLimit
+(
+    const segment& P,
+    const segment& Q,
+    const scalar h
+) const
+{
+    // In one order, the lower fiber id (then segment) first, so that every
+    // side of a pair gets the same number to the last bit
+    const bool pFirst =
+        P.fiber < Q.fiber || (P.fiber == Q.fiber && P.seg < Q.seg);
+    const segment& A = pFirst ? P : Q;
+    const segment& B = pFirst ? Q : P;
+
+    // The ends of both axes move at their velocities (straight paths over
+    // the interval); along them the surfaces' gap is convex in time for
+    // rigid translations, close to it over an interval
+    const scalar touch = 0.5*(A.d + B.d) + range_;
+    const vector vA0(A.v + (A.w ^ (A.a - A.x)));
+    const vector vA1(A.v + (A.w ^ (A.b - A.x)));
+    const vector vB0(B.v + (B.w ^ (B.a - B.x)));
+    const vector vB1(B.v + (B.w ^ (B.b - B.x)));
+    const auto gap = [&](const scalar t)
+    {
+        const segmentDistance::result r =
+            segmentDistance::closest
+            (
+                A.a + t*vA0, A.b + t*vA1, B.a + t*vB0, B.b + t*vB1
+            );
+        return mag(r.a - r.b) - touch;
+    };
+    const scalar g0 = gap(0);
+    const scalar gh = g0 > 0 ? gap(h) : 0;
+    if (!(gh > 0))
+    {
+        // Touching at the start or at the end: seen there
+        return h;
+    }
+
+    // Points of the axes move at most at the largest relative speed of
+    // two ends: the gap stays above (g0 + gh - vMax h)/2
+    const scalar vMax =
+        max
+        (
+            max(mag(vA0 - vB0), mag(vA0 - vB1)),
+            max(mag(vA1 - vB0), mag(vA1 - vB1))
+        );
+    if (g0 + gh > vMax*h)
+    {
+        return h;
+    }
+
+    // The closest approach: golden section to a thousandth of h
+    const scalar phi = 0.5*(std::sqrt(5.0) - 1);
+    scalar lo = 0, hi = h;
+    scalar t1 = hi - phi*(hi - lo), t2 = lo + phi*(hi - lo);
+    scalar f1 = gap(t1), f2 = gap(t2);
+    while (hi - lo > 1e-3*h)
+    {
+        if (f1 < f2)
+        {
+            hi = t2;
+            t2 = t1;
+            f2 = f1;
+            t1 = hi - phi*(hi - lo);
+            f1 = gap(t1);
+        }
+        else
+        {
+            lo = t1;
+            t1 = t2;
+            f1 = f2;
+            t2 = lo + phi*(hi - lo);
+            f2 = gap(t2);
+        }
+        if (min(f1, f2) < 0)
+        {
+            break;
+        }
+    }
+    return f1 < f2 ? (f1 < 0 ? t1 : h) : (f2 < 0 ? t2 : h);
+}
+
+
 Foam::scalar Foam::fiberInteractions::contact::pairLimit
 (
     const segment& A,
@@ -551,6 +635,19 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
         if (!(ij[1] < ij[0]))
         {
             h = pairLimit(segs[ij[0]], segs[ij[1]], h, why);
+
+            // A graze of two fibers within the longest interval (over that
+            // one for every pair: the result does not depend on their
+            // order)
+            const scalar hs =
+                segs[ij[0]].fiber == segs[ij[1]].fiber
+              ? GREAT
+              : sweepLimit(segs[ij[0]], segs[ij[1]], hMax);
+            if (hs < h)
+            {
+                h = hs;
+                why = limit::approaching;
+            }
         }
     }
 
@@ -589,6 +686,68 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
     const scalar hAll = returnReduce(h, minOp<scalar>());
     why = returnReduce(h == hAll ? why : label(-1), maxOp<label>());
     return hAll;
+}
+
+
+Foam::scalar Foam::fiberInteractions::contact::sweptInterval
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    const scalar h
+)
+{
+    // The range of the velocities of the segments' ends: no pair closes
+    // faster, so the search within reach and a skin of that times h holds
+    // every pair that can touch within the interval (the skin at most a
+    // reach; the interval then so short that the skin covers it)
+    vector vMin(vector::uniform(GREAT));
+    vector vMax(vector::uniform(-GREAT));
+    forAll(fibers, fi)
+    {
+        if (roles[fi] == role::absent)
+        {
+            continue;
+        }
+        const fiber& f = fibers[fi];
+        const tensor R(f.R());
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            const vector v(f.segmentVelocity(R, i));
+            const vector dw
+            (
+                f.segmentOmega(i)
+              ^ ((0.5*f.segmentLength(i))*f.segmentDirection(R, i))
+            );
+            vMin = min(vMin, min(v + dw, v - dw));
+            vMax = max(vMax, max(v + dw, v - dw));
+        }
+    }
+    reduce(vMin, minOp<vector>());
+    reduce(vMax, maxOp<vector>());
+    const scalar vRange = vMax.x() < vMin.x() ? 0 : mag(vMax - vMin);
+    const scalar r0 = reach(fibers, roles);
+    scalar hs = vRange*h > r0 ? r0/vRange : h;
+
+    DynamicList<segment>& segs = near_.segs;
+    DynamicList<FixedList<label, 2>>& cand = near_.cand;
+    segs.clear();
+    cand.clear();
+    near_.inReach.clear();
+    near_.skin = vRange*hs;
+    near_.r = gather(fibers, roles, segs, nullptr, near_.skin);
+    candidates(segs, near_.r, cand, near_.skin, &near_.inReach);
+    near_.valid = true;
+    // Every pair over the same interval, so that the result does not
+    // depend on the pairs' order (serial and parallel alike)
+    const scalar H = hs;
+    for (const FixedList<label, 2>& ij : cand)
+    {
+        if (!(ij[1] < ij[0]) && segs[ij[0]].fiber != segs[ij[1]].fiber)
+        {
+            hs = min(hs, sweepLimit(segs[ij[0]], segs[ij[1]], H));
+        }
+    }
+    return returnReduce(hs, minOp<scalar>());
 }
 
 
