@@ -635,19 +635,6 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
         if (!(ij[1] < ij[0]))
         {
             h = pairLimit(segs[ij[0]], segs[ij[1]], h, why);
-
-            // A graze of two fibers within the longest interval (over that
-            // one for every pair: the result does not depend on their
-            // order)
-            const scalar hs =
-                segs[ij[0]].fiber == segs[ij[1]].fiber
-              ? GREAT
-              : sweepLimit(segs[ij[0]], segs[ij[1]], hMax);
-            if (hs < h)
-            {
-                h = hs;
-                why = limit::approaching;
-            }
         }
     }
 
