@@ -2375,6 +2375,7 @@ void testFlexibleState();
 void testFlexibleSegmentLoads();
 void testFlexibleLinks();
 void testFlexibleBuckling();
+void testContactIslands();
 
 
 int main()
@@ -2414,6 +2415,7 @@ int main()
         testFlexibleSegmentLoads();
         testFlexibleLinks();
         testFlexibleBuckling();
+        testContactIslands();
     }
     catch (const Foam::error& err)
     {
