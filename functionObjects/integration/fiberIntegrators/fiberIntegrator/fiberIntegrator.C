@@ -158,6 +158,66 @@ void addLoad
     addBlock(rhs, 3, A & (tau*l.Q - (l.Ktx & dX) - (l.Ktt & dT)));
 }
 
+
+//- The 6x6 system of a step (fiberIntegrator::solve) and its right-hand
+//  side; with out, each segment's force at the solution's parts
+void assemble
+(
+    const fiber& f,
+    const UList<fluidSample>& samples,
+    const fiberHydrodynamics& hydro,
+    const vector& g,
+    const tensor& R,
+    const scalar c,
+    const vector& bV,
+    const vector& bW,
+    const vector& wHat,
+    fiberIntegrator::segmentForces* out,
+    const fiberIntegrator::load* ext,
+    const vector& dxKnown,
+    const vector& dthetaKnown,
+    const scalar h,
+    Matrix6& M,
+    Vector6& rhs,
+    List<vector>& Fs0,
+    List<tensor>& FV0,
+    List<tensor>& Fw0
+)
+{
+    const vector V0(f.velocity());
+    const vector w0(f.omega());
+    const scalar m = f.mass();
+    const tensor I(f.inertia(R));
+
+    // Inertia and gyroscopic term (w x I wHat + wHat x I w)/2, linear in w
+    addBlock(M, 0, 0, (c*m)*tensor::I);
+    addBlock
+    (
+        M, 3, 3,
+        c*I
+      + 0.5
+       *(
+            (fiberHydrodynamics::crossMatrix(wHat) & I)
+          - fiberHydrodynamics::crossMatrix(I & wHat)
+        )
+    );
+    addBlock(rhs, 0, bV + m*g);
+    addBlock(rhs, 3, bW);
+    if (ext)
+    {
+        addLoad(M, rhs, f, R, c, *ext, dxKnown, dthetaKnown, h);
+    }
+    fiberHydrodynamics::segmentLaw k;
+    forAll(samples, i)
+    {
+        addSegment
+        (
+            M, rhs, f, i, R, samples[i], hydro, V0, w0, g, k, out,
+            Fs0, FV0, Fw0
+        );
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -464,34 +524,8 @@ void Foam::fiberIntegrator::solve
     const scalar h
 )
 {
-    const vector V0(f.velocity());
-    const vector w0(f.omega());
-    const scalar m = f.mass();
-    const tensor I(f.inertia(R));
-
     Matrix6 M(Matrix6::Zero());
     Vector6 rhs(Vector6::Zero());
-
-    // Inertia and gyroscopic term (w x I wHat + wHat x I w)/2, linear in w
-    addBlock(M, 0, 0, (c*m)*tensor::I);
-    addBlock
-    (
-        M, 3, 3,
-        c*I
-      + 0.5
-       *(
-            (fiberHydrodynamics::crossMatrix(wHat) & I)
-          - fiberHydrodynamics::crossMatrix(I & wHat)
-        )
-    );
-    addBlock(rhs, 0, bV + m*g);
-    addBlock(rhs, 3, bW);
-    if (ext)
-    {
-        addLoad(M, rhs, f, R, c, *ext, dxKnown, dthetaKnown, h);
-    }
-
-    fiberHydrodynamics::segmentLaw k;
 
     // Per segment for the forces at the solution (out only)
     List<vector> Fs0;
@@ -503,15 +537,11 @@ void Foam::fiberIntegrator::solve
         Fw0.setSize(samples.size());
         out->K.setSize(samples.size());
     }
-
-    forAll(samples, i)
-    {
-        addSegment
-        (
-            M, rhs, f, i, R, samples[i], hydro, V0, w0, g, k, out,
-            Fs0, FV0, Fw0
-        );
-    }
+    assemble
+    (
+        f, samples, hydro, g, R, c, bV, bW, wHat, out, ext, dxKnown,
+        dthetaKnown, h, M, rhs, Fs0, FV0, Fw0
+    );
 
     const Vector6 x(M.partialPivLu().solve(rhs));
 
@@ -524,6 +554,46 @@ void Foam::fiberIntegrator::solve
         forAll(samples, i)
         {
             out->F[i] = Fs0[i] + (FV0[i] & V) + (Fw0[i] & w);
+        }
+    }
+}
+
+
+void Foam::fiberIntegrator::response
+(
+    const fiber& f,
+    const UList<fluidSample>& samples,
+    const fiberHydrodynamics& hydro,
+    const vector& g,
+    const scalar h,
+    scalarList& mobility,
+    scalarList& vFree
+)
+{
+    // The implicit Euler step of h in the present configuration (as
+    // implicitEuler::advance): the system M x = rhs + G for a load G held
+    // over the step, so x = M^-1 rhs + M^-1 G
+    const tensor R(f.R());
+    Matrix6 M(Matrix6::Zero());
+    Vector6 rhs(Vector6::Zero());
+    List<vector> Fs0;
+    List<tensor> FV0, Fw0;
+    assemble
+    (
+        f, samples, hydro, g, R, 1/h, f.mass()*f.velocity()/h,
+        (f.inertia(R) & f.omega())/h, f.omega(), nullptr, nullptr, Zero,
+        Zero, h, M, rhs, Fs0, FV0, Fw0
+    );
+    const Matrix6 Mi(M.inverse());
+    const Vector6 x(Mi*rhs);
+    mobility.setSize(36);
+    vFree.setSize(6);
+    for (label i = 0; i < 6; ++i)
+    {
+        vFree[i] = x(i);
+        for (label j = 0; j < 6; ++j)
+        {
+            mobility[6*i + j] = Mi(i, j);
         }
     }
 }
