@@ -269,19 +269,27 @@ scalar lawResidual(const contactIslands& P, const scalar h)
 void testContactIslandsLaw()
 {
     // Chains of 6 rods, trees of 12 and of 80 (the sparse solve), with and
-    // without friction, by active sets and by sweeps alone
+    // without friction: by default (sweeps, then active sets), by sweeps
+    // alone, and by active sets after a single sweep (without friction:
+    // with it, the active sets' Newton on the slip direction settles only
+    // 19 of these 30 islands within its 10 passes; the sweeps take over)
     std::mt19937 gen(7);
     const scalar h = 1e-4;
-    for (const bool sweepsOnly : {false, true})
+    const FixedList<std::string, 3> mode{"default", "sweeps", "activeSets"};
+    forAll(mode, k)
     {
         for (const scalar mu : {0.0, 0.3})
         {
+            if (k == 2 && mu > 0)
+            {
+                continue;
+            }
             scalar worst = 0;
             label unconverged = 0;
             label iterations = 0;
             for (label trial = 0; trial < 30; ++trial)
             {
-                contactIslands P(1e-13, 20000, !sweepsOnly);
+                contactIslands P(1e-13, k == 2 ? 1 : 20000, k != 1);
                 List<rigid> bodies;
                 const label n = trial < 10 ? 6 : trial < 25 ? 12 : 80;
                 randomProblem(P, bodies, n, mu, h, gen, trial >= 10);
@@ -291,9 +299,8 @@ void testContactIslandsLaw()
                 iterations = max(iterations, P.stats().iterations);
             }
             std::ostringstream nm, det;
-            nm  << "contactIslands.lawAtEnd."
-                << (sweepsOnly ? "sweeps" : "activeSets") << ".mu" << mu;
-            det << "largest residual " << worst << ", most passes or sweeps "
+            nm  << "contactIslands.lawAtEnd." << mode[k] << ".mu" << mu;
+            det << "largest residual " << worst << ", most passes and sweeps "
                 << iterations << ", unconverged " << unconverged;
             check(nm.str(), worst < 1e-8 && unconverged == 0, det.str());
         }

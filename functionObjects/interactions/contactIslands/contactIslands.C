@@ -15,7 +15,6 @@ License
 #include <Eigen/Dense>
 #include <vector>
 #include <map>
-#include <algorithm>
 #include <cmath>
 #include <Eigen/Sparse>
 
@@ -138,12 +137,6 @@ struct localResult
     bool pressed;
     vector s;
 };
-
-
-bool finiteVector(const vector& v)
-{
-    return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
-}
 
 
 vec3 toEigen(const vector& v)
@@ -653,21 +646,36 @@ vec3 slipDirection
     B.col(1) = toEigen(t2);
     const Eigen::Matrix2d W2(B.transpose()*Wt*B);
     const Eigen::Vector2d c2(B.transpose()*c0);
-    auto eAt = [&](const scalar lambda)
+    // The 2x2 inverse in closed form; Newton on |e|^2 - 1 (falling and
+    // convex in lambda), kept within the bracket [lo, hi] by bisection
+    auto inverse = [&](const scalar lambda)
     {
-        return Eigen::Vector2d
-        (
-            (lambda*Eigen::Matrix2d::Identity() + kappa*W2).lu().solve(c2)
-        );
+        Eigen::Matrix2d A(kappa*W2);
+        A(0, 0) += lambda;
+        A(1, 1) += lambda;
+        const scalar det = A(0, 0)*A(1, 1) - A(0, 1)*A(1, 0);
+        Eigen::Matrix2d Ai;
+        Ai << A(1, 1), -A(0, 1), -A(1, 0), A(0, 0);
+        return Eigen::Matrix2d(Ai/det);
     };
     scalar lo = 0;
     scalar hi = c2.norm() + kappa*W2.norm();
-    for (label it = 0; it < 200 && hi - lo > 1e-15*hi; ++it)
+    scalar lambda = hi;
+    for (label it = 0; it < 100 && hi - lo > 1e-15*hi; ++it)
     {
-        const scalar mid = 0.5*(lo + hi);
-        (eAt(mid).norm() > 1 ? lo : hi) = mid;
+        const Eigen::Matrix2d Ai(inverse(lambda));
+        const Eigen::Vector2d e(Ai*c2);
+        const scalar phi = e.squaredNorm() - 1;
+        (phi > 0 ? lo : hi) = lambda;
+        const scalar dphi = -2*e.dot(Ai*e);
+        const scalar next = dphi < 0 ? lambda - phi/dphi : -1;
+        if (mag(phi) < 1e-14)
+        {
+            break;
+        }
+        lambda = next > lo && next < hi ? next : 0.5*(lo + hi);
     }
-    const Eigen::Vector2d e(eAt(hi));
+    const Eigen::Vector2d e(inverse(lambda)*c2);
     return B*(e/max(e.norm(), VSMALL));
 }
 
@@ -849,8 +857,10 @@ Foam::List<Foam::labelList> Foam::contactIslands::islands() const
 
 void Foam::contactIslands::solveIsland(const labelList& cs, const scalar h)
 {
-    // The explicit forces first; then the contacts' forces by active sets,
-    // by sweeps from their result where they do not settle
+    // The explicit forces first; then sweeps (cheap where they converge
+    // fast), active sets where a hundred do not settle (exact where they
+    // settle, as they do where the sweeps crawl: long stiff chains), and
+    // the rest of the sweeps where they fail too
     const label m = cs.size();
     std::vector<std::vector<side>> sides(m);
     std::vector<vector> uFree(m);
@@ -868,28 +878,35 @@ void Foam::contactIslands::solveIsland(const labelList& cs, const scalar h)
     }
     const blockMap W(couplings(bodies_, sides));
     std::vector<vector> f(m, Zero);
-    const label passes =
-        activeSets_ ? activeSet(contacts_, cs, W, uFree, h, f) : -1;
-    if (passes < 0 && !std::all_of(f.begin(), f.end(), finiteVector))
+    const label first = activeSets_ ? min(100, maxSweeps_) : maxSweeps_;
+    label n = sweeps(bodies_, contacts_, cs, sides, W, h, tolerance_, first, f);
+    stats_.iterations += mag(n);
+    if (n < 0 && activeSets_)
     {
-        f.assign(m, Zero);
-    }
-    forAll(cs, i)
-    {
-        for (const side& t : sides[i])
+        std::vector<vector> fa(m, Zero);
+        const label passes = activeSet(contacts_, cs, W, uFree, h, fa);
+        stats_.iterations += mag(passes);
+        if (passes > 0)
         {
-            push(bodies_[t.body], t, f[i]);
+            // The bodies' velocities with these forces instead
+            forAll(cs, i)
+            {
+                for (const side& t : sides[i])
+                {
+                    push(bodies_[t.body], t, fa[i] - f[i]);
+                }
+            }
+            f = fa;
+            n = 1;
+        }
+        else
+        {
+            n = sweeps(bodies_, contacts_, cs, sides, W, h, tolerance_,
+                max(maxSweeps_ - first, 1), f);
+            stats_.iterations += mag(n);
         }
     }
-    stats_.iterations += mag(passes);
-    if (passes < 0)
-    {
-        const label n =
-            sweeps(bodies_, contacts_, cs, sides, W, h, tolerance_,
-                maxSweeps_, f);
-        stats_.iterations += mag(n);
-        stats_.unconverged += n < 0;
-    }
+    stats_.unconverged += n < 0;
     forAll(cs, i)
     {
         stats_.residual =
