@@ -199,6 +199,13 @@ Foam::fiberCloud::fiberCloud
     nOnwardStep_(0)
 {
     readWallRule(dict);
+    interactions_->setResponder
+    (
+        [this](const label fi, const scalar h, scalarList& M, scalarList& v)
+        {
+            return fiberResponse(fi, h, M, v);
+        }
+    );
     label nPeriodic = 0;
     images_ = periodicImages::transforms(mesh_, nPeriodic);
     if (constraint_.active())

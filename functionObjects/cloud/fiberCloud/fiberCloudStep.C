@@ -102,6 +102,33 @@ bool Foam::fiberCloud::sampleSegments
 }
 
 
+bool Foam::fiberCloud::fiberResponse
+(
+    const label fi,
+    const scalar h,
+    scalarList& mobility,
+    scalarList& vFree
+)
+{
+    const fiber& f = fibers_[fi];
+    if (f.flexible())
+    {
+        return false;
+    }
+    List<fluidSample> s(f.nSegments());
+    if (!sampleSegments(fi, Zero, f.R(), s))
+    {
+        return false;
+    }
+    const vector g
+    (
+        buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_
+    );
+    fiberIntegrator::response(f, s, hydro_, g, h, mobility, vFree);
+    return true;
+}
+
+
 bool Foam::fiberCloud::wallContact
 (
     const label fi,

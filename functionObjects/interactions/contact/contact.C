@@ -160,6 +160,11 @@ Foam::fiberInteractions::contact::contact
     cohesion_(0),
     range_(0),
     implicit_(false),
+    constraints_(false),
+    islands_(),
+    bodyOf_(),
+    islandPairs_(),
+    warnedUnsettled_(false),
     maxApproach_(0.25),
     hLast_(0),
     warnedFlexible_(false),
@@ -193,7 +198,7 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
         ({
             "type", "stiffness", "restitution", "friction",
             "tangentialStiffness", "contactSteps", "cohesion", "implicit",
-            "maxApproach"
+            "maxApproach", "scheme"
         }),
         "interactions (contact)"
     );
@@ -222,12 +227,15 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
             << "Entry 'contactSteps' must be at least 1, not "
             << contactSteps_ << exit(FatalIOError);
     }
-    implicit_ = dict.getOrDefault<Switch>("implicit", false);
+    readScheme(dict);
     maxApproach_ = keywordCheck::positive(dict, "maxApproach", 0.25);
     keywordCheck::noEffect
     (
         dict, implicit_ ? "contactSteps" : "maxApproach",
-        implicit_
+        constraints_
+      ? "with scheme constraints (the intervals follow the approach of"
+        " pairs, maxApproach)"
+      : implicit_
       ? "with implicit on (the intervals follow the approach of pairs,"
         " maxApproach)"
       : "with explicit contacts (implicit off: the intervals resolve the"
@@ -270,7 +278,12 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
     Info<< "    Fiber contacts: k_n " << kn_ << " N/m, restitution " << e_
         << " (damping ratio " << zeta_ << "), friction " << mu_
         << ", k_t/k_n " << ktRatio_;
-    if (implicit_)
+    if (constraints_)
+    {
+        Info<< ", constraints per island (intervals by the approach of"
+            << " pairs, at most " << maxApproach_ << " diameters each)";
+    }
+    else if (implicit_)
     {
         Info<< ", implicit: intervals by the approach of pairs, at most "
             << maxApproach_ << " diameters each (collisions inelastic"
@@ -285,6 +298,48 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
         Info<< ", cohesion " << cohesion_ << " N within " << range_ << " m";
     }
     Info<< endl;
+}
+
+
+void Foam::fiberInteractions::contact::readScheme(const dictionary& dict)
+{
+    // 'scheme' explicit, implicit or constraints; 'implicit on' is
+    // 'scheme implicit' (the entry before 'scheme' was)
+    const bool implicitOn = dict.getOrDefault<Switch>("implicit", false);
+    const word scheme
+    (
+        dict.getOrDefault<word>("scheme", implicitOn ? "implicit" : "explicit")
+    );
+    if
+    (
+        scheme != "explicit" && scheme != "implicit"
+     && scheme != "constraints"
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'scheme' must be explicit (springs resolved in time:"
+            << " bouncing, exact restitution), implicit (implicit springs"
+            << " on each fiber) or constraints (the contacts of fibers that"
+            << " touch solved together per island), not '" << scheme << "'"
+            << exit(FatalIOError);
+    }
+    if (dict.found("implicit") && dict.found("scheme") && implicitOn)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entries 'implicit on' and 'scheme " << scheme << "' both"
+            << " given: 'implicit on' is 'scheme implicit'; keep one"
+            << exit(FatalIOError);
+    }
+    implicit_ = scheme != "explicit";
+    constraints_ = scheme == "constraints";
+    if (constraints_ && Pstream::parRun())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'scheme constraints': not yet in parallel (an island"
+            << " of fibers that touch across processors is not solved by"
+            << " one owner yet); use 'scheme implicit' in parallel runs"
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -874,6 +929,17 @@ void Foam::fiberInteractions::contact::interact
     DynamicList<FixedList<label, 2>> touching;
     DynamicList<FixedList<label, 2>> close;
     records_.clear();
+    if (constraints_)
+    {
+        constrain(fibers, segs, cand, h, next, loads, touching, close);
+        springs_.transfer(next);
+        count(touching, close);
+        segs.clear();
+        cand.clear();
+        near_.segs.transfer(segs);
+        near_.inReach.transfer(cand);
+        return;
+    }
 
     // The loads on this processor's fibers, by pair
     DynamicList<contribution> parts;
@@ -1025,7 +1091,7 @@ void Foam::fiberInteractions::contact::settle
     const UList<fiberIntegrator::load>& loads
 )
 {
-    if (!implicit_)
+    if (!implicit_ || constraints_)
     {
         return;
     }

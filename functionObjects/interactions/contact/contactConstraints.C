@@ -1,0 +1,330 @@
+/*---------------------------------------------------------------------------*\
+  =========                 |
+  \\      /  F ield         | fiberTracking: rigid fibers for OpenFOAM
+   \\    /   O peration     |
+    \\  /    A nd           |
+     \\/     M anipulation  |
+-------------------------------------------------------------------------------
+License
+    This file is part of fiberTracking, distributed under GPL-3.0-or-later.
+
+Description
+    The contacts as constraints solved per island (scheme constraints):
+    the pairs of an interval, each once, as contactIslands' contacts.
+
+\*---------------------------------------------------------------------------*/
+
+#include "contact.H"
+#include "segmentDistance.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- A force on a fiber of this processor at a point, by pair key (summed
+//  in the key's order)
+struct pointForce
+{
+    fiberInteractions::contact::pairKey key;
+    label local;
+    label seg;
+    vector F;
+    point c;
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+Foam::label Foam::fiberInteractions::contact::islandBody
+(
+    const label local,
+    const scalar h
+)
+{
+    const auto it = bodyOf_.cfind(local);
+    if (it.found())
+    {
+        return *it;
+    }
+    const label b = islands_.addBody(1);
+    contactIslands::body& B = islands_.bodyAt(b);
+    if (!response_ || !response_(local, h, B.mobility, B.vFree))
+    {
+        FatalErrorInFunction
+            << "Entry 'scheme constraints' of 'interactions': a fiber in"
+            << " contact cannot say how it responds over the interval"
+            << " (a flexible fiber, or one with a segment on another"
+            << " processor's part): the constraint form takes rigid"
+            << " fibers only so far; use 'scheme implicit' or 'scheme"
+            << " explicit' here" << exit(FatalError);
+    }
+    bodyOf_.insert(local, b);
+    return b;
+}
+
+
+void Foam::fiberInteractions::contact::checkTranslated
+(
+    const fiber& f,
+    const segment& P
+) const
+{
+    // An image across a rotational periodic patch would need the
+    // partner's response turned into the image's frame
+    const vector z(f.segmentDirection(f.R(), P.seg));
+    if (mag(normalised(P.b - P.a) - z) > 1e-9)
+    {
+        FatalErrorInFunction
+            << "Entry 'scheme constraints' of 'interactions': fiber "
+            << P.fiber << " touches a fiber across a rotational periodic"
+            << " patch, which the constraint form does not take yet (only"
+            << " translational ones); use 'scheme implicit' here"
+            << exit(FatalError);
+    }
+}
+
+
+bool Foam::fiberInteractions::contact::constraintOf
+(
+    const segment& A,
+    const segment& B,
+    const scalar h,
+    contactIslands::contact& c,
+    point& cp,
+    bool& touching,
+    bool& close
+)
+{
+    // The pair from the lower fiber id (A): its closest points, overlap
+    // and normal, as pairForce
+    const segmentDistance::result r =
+        segmentDistance::closest(A.a, A.b, B.a, B.b);
+    const scalar dist = std::sqrt(r.distSqr);
+    const scalar delta = 0.5*(A.d + B.d) - dist;
+    const bool owns =
+        ownsContact(A, r.s, r.a - r.b) && ownsContact(B, r.t, r.b - r.a);
+    touching = (delta > 0 || (cohesion_ > 0 && -delta < range_)) && owns;
+    close = owns && -delta < range_ + 0.1*min(A.d, B.d);
+    vector n;
+    if (dist > 1e-12*(A.d + B.d))
+    {
+        n = (r.a - r.b)/dist;
+    }
+    else
+    {
+        const vector cr((A.b - A.a) ^ (B.b - B.a));
+        n =
+            mag(cr) > 0
+          ? normalised(cr)
+          : normalised((A.b - A.a) ^ vector(1, 2, 3));
+    }
+    cp = 0.5*((r.a - 0.5*A.d*n) + (r.b + 0.5*B.d*n));
+
+    // A pair that could touch within the interval at the speeds it has
+    // (twice over), or that attracts: a constraint (the law pushes only
+    // where the end overlap would be positive)
+    const vector vA(A.v + (A.w ^ (cp - A.x)));
+    const vector vB(B.v + (B.w ^ (cp - B.x)));
+    if (!owns || !(delta + 2*h*mag(vA - vB) > 0 || touching))
+    {
+        return false;
+    }
+    const scalar m =
+        A.m > 0 && B.m > 0 ? A.m*B.m/(A.m + B.m) : max(A.m, B.m);
+    c.n = n;
+    c.delta0 = delta;
+    c.kn = kn_;
+    c.cn = 2*zeta_*std::sqrt(m*kn_);
+    c.kt = ktRatio_*kn_;
+    c.ct = 2*zeta_*std::sqrt(m*c.kt);
+    c.mu = mu_;
+    c.fExtra =
+        !(cohesion_ > 0) || !touching ? vector(Zero)
+      : delta > 0 ? -cohesion_*n
+      : -cohesion_*(1 + delta/range_)*n;
+    return true;
+}
+
+
+void Foam::fiberInteractions::contact::constrain
+(
+    const PtrList<fiber>& fibers,
+    const UList<segment>& segs,
+    const UList<FixedList<label, 2>>& cand,
+    const scalar h,
+    springTable& next,
+    UList<fiberIntegrator::load>& loads,
+    DynamicList<FixedList<label, 2>>& touching,
+    DynamicList<FixedList<label, 2>>& close
+)
+{
+    // Each pair once, from the side of the lower fiber id, where that
+    // fiber is this processor's (a partner beyond a periodic patch is an
+    // image of one of its fibers: serial, so every fiber is here)
+    Map<label> localOf(2*fibers.size());
+    forAll(fibers, fi)
+    {
+        localOf.insert(fibers[fi].id(), fi);
+    }
+    islands_.clear();
+    bodyOf_.clear();
+    islandPairs_.clear();
+    for (const FixedList<label, 2>& ij : cand)
+    {
+        const segment& Q = segs[ij[0]];
+        const segment& P = segs[ij[1]];
+        if (Q.fiber >= P.fiber || Q.local < 0)
+        {
+            continue;
+        }
+        contactIslands::contact c;
+        point cp;
+        bool isTouching = false;
+        bool isClose = false;
+        const bool acts =
+            constraintOf(Q, P, h, c, cp, isTouching, isClose);
+        if (isClose)
+        {
+            close.append(FixedList<label, 2>{Q.fiber, P.fiber});
+            close.append(FixedList<label, 2>{P.fiber, Q.fiber});
+        }
+        if (isTouching)
+        {
+            touching.append(FixedList<label, 2>{Q.fiber, P.fiber});
+            touching.append(FixedList<label, 2>{P.fiber, Q.fiber});
+        }
+        if (!acts || !(Q.m > 0 || P.m > 0))
+        {
+            continue;
+        }
+        const label pLocal = P.local >= 0 ? P.local : localOf[P.fiber];
+        if (P.local < 0)
+        {
+            checkTranslated(fibers[pLocal], P);
+        }
+        const pairKey k{Q.fiber, Q.seg, P.fiber, P.seg};
+        addConstraint(Q, P, pLocal, h, cp, c);
+        islandPairs_.append
+        (
+            constraintPair
+            {
+                k, cp, Q.local, pLocal,
+                fibers[pLocal].position() - P.x, Q.m > 0
+            }
+        );
+    }
+    islands_.solve(h);
+    const contactIslands::statistics& st = islands_.stats();
+    if (st.unconverged > 0 && !warnedUnsettled_)
+    {
+        // Said once: the forces of the last sweep are used
+        warnedUnsettled_ = true;
+        WarningInFunction
+            << "Contacts as constraints: " << st.unconverged << " of "
+            << st.islands << " islands did not settle within 500 sweeps"
+            << " (largest residual of the law " << st.residual << "); the"
+            << " forces of the last sweep are used.  Said once per run"
+            << endl;
+    }
+    applyConstraints(fibers, next, loads);
+}
+
+
+void Foam::fiberInteractions::contact::addConstraint
+(
+    const segment& Q,
+    const segment& P,
+    const label pLocal,
+    const scalar h,
+    const point& cp,
+    contactIslands::contact& c
+)
+{
+    const pairKey k{Q.fiber, Q.seg, P.fiber, P.seg};
+    // The tangential spring of the pair (the lower id's), turned into the
+    // contact plane with its length kept
+    pairKey from(k);
+    vector xi(previousSpring(k, from));
+    const scalar len = mag(xi);
+    xi -= (xi & c.n)*c.n;
+    if (mag(xi) > 0)
+    {
+        xi *= len/mag(xi);
+    }
+
+    // The island's A is the moving side: the lower id, or its partner
+    // where the lower id is fixed (then the normal, spring and force
+    // turn).  A partner beyond a periodic patch (an image) moves as its
+    // fiber, translated: its lever from the image's centre
+    const bool qMoves = Q.m > 0;
+    const segment& A = qMoves ? Q : P;
+    const segment& B = qMoves ? P : Q;
+    const scalar sgn = qMoves ? 1 : -1;
+    c.a = islandBody(qMoves ? Q.local : pLocal, h);
+    c.ra = cp - A.x;
+    c.b = B.m > 0 ? islandBody(qMoves ? pLocal : Q.local, h) : -1;
+    c.rb = cp - B.x;
+    c.vB = B.v + (B.w ^ c.rb);
+    c.n *= sgn;
+    c.fExtra *= sgn;
+    c.xi0 = sgn*xi;
+    islands_.addContact(c);
+}
+
+
+void Foam::fiberInteractions::contact::applyConstraints
+(
+    const PtrList<fiber>& fibers,
+    springTable& next,
+    UList<fiberIntegrator::load>& loads
+)
+{
+    // The force on the lower id (Q) of each pair, -f on its partner at the
+    // same point (an image's fiber: moved by the image's translation),
+    // summed in the keys' order; the springs at the end under both keys
+    DynamicList<pointForce> parts;
+    forAll(islandPairs_, i)
+    {
+        const constraintPair& cp = islandPairs_[i];
+        const contactIslands::contact& c = islands_.contactAt(i);
+        const pairKey& k = cp.key;
+        const vector fQ(cp.qMoves ? c.f : -c.f);
+        const vector xi(cp.qMoves ? c.xiEnd : -c.xiEnd);
+        const pairKey kr{k[2], k[3], k[0], k[1]};
+        next.set(k, xi);
+        next.set(kr, xi);
+        if (cp.qMoves)
+        {
+            parts.append(pointForce{k, cp.q, k[1], fQ, cp.c});
+        }
+        if (c.b >= 0 || !cp.qMoves)
+        {
+            parts.append
+            (
+                pointForce{kr, cp.p, k[3], -fQ, cp.c + cp.shift}
+            );
+        }
+    }
+    std::sort
+    (
+        parts.begin(), parts.end(),
+        [](const pointForce& a, const pointForce& b)
+        {
+            return a.key < b.key;
+        }
+    );
+    for (const pointForce& p : parts)
+    {
+        loads[p.local].addForce(fibers[p.local], p.seg, p.F, p.c);
+    }
+}
+
+
+// ************************************************************************* //
