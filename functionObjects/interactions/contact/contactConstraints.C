@@ -138,12 +138,16 @@ bool Foam::fiberInteractions::contact::constraintOf
     }
     const scalar m =
         A.m > 0 && B.m > 0 ? A.m*B.m/(A.m + B.m) : max(A.m, B.m);
+    // The dashpots act on a pair that touches at the start; on one apart
+    // at the start only the spring on the end overlap (a dashpot there
+    // would push across the gap before the pair touches)
+    const scalar damped = delta > 0 ? 1 : 0;
     c.n = n;
     c.delta0 = delta;
     c.kn = kn_;
-    c.cn = 2*zeta_*std::sqrt(m*kn_);
+    c.cn = damped*2*zeta_*std::sqrt(m*kn_);
     c.kt = ktRatio_*kn_;
-    c.ct = 2*zeta_*std::sqrt(m*c.kt);
+    c.ct = damped*2*zeta_*std::sqrt(m*c.kt);
     c.mu = mu_;
     c.fExtra =
         !(cohesion_ > 0) || !touching ? vector(Zero)
@@ -322,7 +326,12 @@ void Foam::fiberInteractions::contact::applyConstraints
     );
     for (const pointForce& p : parts)
     {
+        // The interval resolves the contact (its law holds at the end of
+        // the fiber's implicit Euler step of the interval): marked as
+        // under contact, the sub-steps skip their error estimate, as
+        // under implicit springs (zero springs: the step is unchanged)
         loads[p.local].addForce(fibers[p.local], p.seg, p.F, p.c);
+        loads[p.local].implicit = true;
     }
 }
 
