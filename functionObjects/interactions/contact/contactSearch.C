@@ -218,6 +218,82 @@ boundBox segmentBox(const segment& s, const scalar r)
 }
 
 
+//- Of two axes whose ends (p: A's two, then B's) move straight at their
+//  velocities v from time 0, surfaces touching at a distance touch: the
+//  time of their closest approach in (0, h) where they touch then but are
+//  apart at 0 and at h (a graze), h where there is none.  Golden section
+//  to a thousandth of h on the gap (convex in time for rigid
+//  translations, close to it over an interval)
+scalar grazeTime
+(
+    const FixedList<point, 4>& p,
+    const FixedList<vector, 4>& v,
+    const scalar touch,
+    const scalar h
+)
+{
+    const auto gap = [&](const scalar t)
+    {
+        const segmentDistance::result r =
+            segmentDistance::closest
+            (
+                p[0] + t*v[0], p[1] + t*v[1], p[2] + t*v[2], p[3] + t*v[3]
+            );
+        return mag(r.a - r.b) - touch;
+    };
+    const scalar g0 = gap(0);
+    const scalar gh = g0 > 0 ? gap(h) : 0;
+    if (!(gh > 0))
+    {
+        // Touching at the start or at the end: seen there
+        return h;
+    }
+
+    // Points of the axes move at most at the largest relative speed of
+    // two ends: the gap stays above (g0 + gh - vMax h)/2
+    const scalar vMax =
+        max
+        (
+            max(mag(v[0] - v[2]), mag(v[0] - v[3])),
+            max(mag(v[1] - v[2]), mag(v[1] - v[3]))
+        );
+    if (g0 + gh > vMax*h)
+    {
+        return h;
+    }
+
+    // The closest approach: golden section to a thousandth of h
+    const scalar phi = 0.5*(std::sqrt(5.0) - 1);
+    scalar lo = 0, hi = h;
+    scalar t1 = hi - phi*(hi - lo), t2 = lo + phi*(hi - lo);
+    scalar f1 = gap(t1), f2 = gap(t2);
+    while (hi - lo > 1e-3*h)
+    {
+        if (f1 < f2)
+        {
+            hi = t2;
+            t2 = t1;
+            f2 = f1;
+            t1 = hi - phi*(hi - lo);
+            f1 = gap(t1);
+        }
+        else
+        {
+            lo = t1;
+            t1 = t2;
+            f1 = f2;
+            t2 = lo + phi*(hi - lo);
+            f2 = gap(t2);
+        }
+        if (min(f1, f2) < 0)
+        {
+            break;
+        }
+    }
+    return f1 < f2 ? (f1 < 0 ? t1 : h) : (f2 < 0 ? t2 : h);
+}
+
+
 } // End anonymous namespace
 
 
@@ -469,70 +545,16 @@ Foam::scalar Foam::fiberInteractions::contact::sweepLimit
     // The ends of both axes move at their velocities (straight paths over
     // the interval); along them the surfaces' gap is convex in time for
     // rigid translations, close to it over an interval
-    const scalar touch = 0.5*(A.d + B.d) + range_;
     const vector vA0(A.v + (A.w ^ (A.a - A.x)));
     const vector vA1(A.v + (A.w ^ (A.b - A.x)));
     const vector vB0(B.v + (B.w ^ (B.a - B.x)));
     const vector vB1(B.v + (B.w ^ (B.b - B.x)));
-    const auto gap = [&](const scalar t)
-    {
-        const segmentDistance::result r =
-            segmentDistance::closest
-            (
-                A.a + t*vA0, A.b + t*vA1, B.a + t*vB0, B.b + t*vB1
-            );
-        return mag(r.a - r.b) - touch;
-    };
-    const scalar g0 = gap(0);
-    const scalar gh = g0 > 0 ? gap(h) : 0;
-    if (!(gh > 0))
-    {
-        // Touching at the start or at the end: seen there
-        return h;
-    }
-
-    // Points of the axes move at most at the largest relative speed of
-    // two ends: the gap stays above (g0 + gh - vMax h)/2
-    const scalar vMax =
-        max
+    return
+        grazeTime
         (
-            max(mag(vA0 - vB0), mag(vA0 - vB1)),
-            max(mag(vA1 - vB0), mag(vA1 - vB1))
+            {A.a, A.b, B.a, B.b}, {vA0, vA1, vB0, vB1},
+            0.5*(A.d + B.d) + range_, h
         );
-    if (g0 + gh > vMax*h)
-    {
-        return h;
-    }
-
-    // The closest approach: golden section to a thousandth of h
-    const scalar phi = 0.5*(std::sqrt(5.0) - 1);
-    scalar lo = 0, hi = h;
-    scalar t1 = hi - phi*(hi - lo), t2 = lo + phi*(hi - lo);
-    scalar f1 = gap(t1), f2 = gap(t2);
-    while (hi - lo > 1e-3*h)
-    {
-        if (f1 < f2)
-        {
-            hi = t2;
-            t2 = t1;
-            f2 = f1;
-            t1 = hi - phi*(hi - lo);
-            f1 = gap(t1);
-        }
-        else
-        {
-            lo = t1;
-            t1 = t2;
-            f1 = f2;
-            t2 = lo + phi*(hi - lo);
-            f2 = gap(t2);
-        }
-        if (min(f1, f2) < 0)
-        {
-            break;
-        }
-    }
-    return f1 < f2 ? (f1 < 0 ? t1 : h) : (f2 < 0 ? t2 : h);
 }
 
 
@@ -735,6 +757,120 @@ Foam::scalar Foam::fiberInteractions::contact::sweptInterval
         }
     }
     return returnReduce(hs, minOp<scalar>());
+}
+
+
+void Foam::fiberInteractions::contact::missedGrazes
+(
+    const scalar t,
+    const scalar h,
+    const UList<segment>& segs,
+    const UList<FixedList<label, 2>>& cand
+)
+{
+    // The last interval's candidates, where it ends now (over more than
+    // one interval the ends' motion is not one straight path)
+    if (swept_.size() && mag(t - sweptEnd_) <= 1e-6*sweptH_)
+    {
+        // The copies of each segment (its own, its images, another
+        // processor's) as a list from the first, by fiber and segment
+        HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
+            first(2*segs.size());
+        List<label> next(segs.size(), -1);
+        forAll(segs, i)
+        {
+            const FixedList<label, 2> key{segs[i].fiber, segs[i].seg};
+            auto it = first.find(key);
+            if (it.found())
+            {
+                next[i] = *it;
+                *it = i;
+            }
+            else
+            {
+                first.insert(key, i);
+            }
+        }
+
+        // The copy nearest to where the segment was (a periodic image
+        // where it crossed a periodic patch or its partner was an image)
+        const auto nearest = [&](const label f, const label s, const point& a)
+        {
+            label best = -1;
+            scalar dBest = GREAT;
+            const auto it = first.cfind(FixedList<label, 2>{f, s});
+            for (label i = it.found() ? *it : -1; i >= 0; i = next[i])
+            {
+                if (magSqr(segs[i].a - a) < dBest)
+                {
+                    dBest = magSqr(segs[i].a - a);
+                    best = i;
+                }
+            }
+            return best;
+        };
+
+        HashSet<pairKey, pairKey::Hash<>> grazed;
+        for (const sweptPair& p : swept_)
+        {
+            // A segment gone (or beyond this processor's reach) is not
+            // followed
+            const label iA = nearest(p.k[0], p.k[1], p.ends[0]);
+            const label iB = nearest(p.k[2], p.k[3], p.ends[2]);
+            if (iA < 0 || iB < 0)
+            {
+                continue;
+            }
+            const segment& A = segs[iA];
+            const segment& B = segs[iB];
+            const FixedList<vector, 4> dp
+            {
+                A.a - p.ends[0], A.b - p.ends[1],
+                B.a - p.ends[2], B.b - p.ends[3]
+            };
+
+            // No point of one axis moved against one of the other by more
+            // than two ends did: a pair whose centres were farther apart
+            // than that, the half lengths and the touch cannot have met
+            const scalar touch = 0.5*(A.d + B.d) + range_;
+            const scalar gLow =
+                mag(0.5*(p.ends[0] + p.ends[1] - p.ends[2] - p.ends[3]))
+              - 0.5*(mag(A.b - A.a) + mag(B.b - B.a)) - touch;
+            const scalar dMax =
+                max
+                (
+                    max(mag(dp[0] - dp[2]), mag(dp[0] - dp[3])),
+                    max(mag(dp[1] - dp[2]), mag(dp[1] - dp[3]))
+                );
+            if (gLow < dMax && grazeTime(p.ends, dp, touch, 1) < 1)
+            {
+                grazed.insert(p.k);
+            }
+        }
+        nMissed_ += grazed.size();
+    }
+
+    // This interval's candidates of different fibers, the lower id first
+    // and of this processor (each pair on one processor)
+    swept_.clear();
+    for (const FixedList<label, 2>& ij : cand)
+    {
+        const segment& Q = segs[ij[0]];
+        const segment& P = segs[ij[1]];
+        if (Q.local >= 0 && Q.fiber < P.fiber)
+        {
+            swept_.append
+            (
+                sweptPair
+                {
+                    pairKey{Q.fiber, Q.seg, P.fiber, P.seg},
+                    FixedList<point, 4>{Q.a, Q.b, P.a, P.b}
+                }
+            );
+        }
+    }
+    sweptEnd_ = t + h;
+    sweptH_ = h;
 }
 
 
