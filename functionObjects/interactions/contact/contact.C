@@ -874,7 +874,7 @@ void Foam::fiberInteractions::contact::interact
     }
     else
     {
-        swept_.clear();
+        sweptCand_.clear();
     }
     DynamicList<segment> segs;
     DynamicList<FixedList<label, 2>> cand;

@@ -218,10 +218,39 @@ boundBox segmentBox(const segment& s, const scalar r)
 }
 
 
+//- A lower bound on the distance of the segments ab and cd, without their
+//  closest points: the largest of the centres' distance less the half
+//  lengths, the gap of their boxes along any axis, and the distance of
+//  their lines (most candidate pairs cross at an angle)
+scalar axesApart
+(
+    const point& a,
+    const point& b,
+    const point& c,
+    const point& d
+)
+{
+    const vector dc(0.5*(a + b - c - d));
+    const vector hAB(0.5*(b - a));
+    const vector hCD(0.5*(d - c));
+    scalar low = mag(dc) - mag(hAB) - mag(hCD);
+    const vector box(cmptMag(dc) - cmptMag(hAB) - cmptMag(hCD));
+    low = max(low, cmptMax(box));
+    const vector n(hAB ^ hCD);
+    const scalar nn = magSqr(n);
+    if (nn > SMALL*magSqr(hAB)*magSqr(hCD))
+    {
+        low = max(low, mag(dc & n)/std::sqrt(nn));
+    }
+    return low;
+}
+
+
 //- Of two axes whose ends (p: A's two, then B's) move straight at their
 //  velocities v from time 0, surfaces touching at a distance touch: the
 //  time of their closest approach in (0, h) where they touch then but are
-//  apart at 0 and at h (a graze), h where there is none.  Golden section
+//  apart at 0 and at h (a graze), h where there is none (touches: set
+//  where they touch at 0 or at h).  Golden section
 //  to a thousandth of h on the gap (convex in time for rigid
 //  translations, close to it over an interval)
 scalar grazeTime
@@ -229,7 +258,8 @@ scalar grazeTime
     const FixedList<point, 4>& p,
     const FixedList<vector, 4>& v,
     const scalar touch,
-    const scalar h
+    const scalar h,
+    bool* touches = nullptr
 )
 {
     const auto gap = [&](const scalar t)
@@ -246,6 +276,10 @@ scalar grazeTime
     if (!(gh > 0))
     {
         // Touching at the start or at the end: seen there
+        if (touches)
+        {
+            *touches = true;
+        }
         return h;
     }
 
@@ -765,112 +799,181 @@ void Foam::fiberInteractions::contact::missedGrazes
     const scalar t,
     const scalar h,
     const UList<segment>& segs,
-    const UList<FixedList<label, 2>>& cand
+    DynamicList<FixedList<label, 2>>& cand
 )
 {
     // The last interval's candidates, where it ends now (over more than
     // one interval the ends' motion is not one straight path)
-    if (swept_.size() && mag(t - sweptEnd_) <= 1e-6*sweptH_)
+    if (sweptCand_.size() && mag(t - sweptEnd_) <= 1e-6*sweptH_)
     {
-        // The copies of each segment (its own, its images, another
-        // processor's) as a list from the first, by fiber and segment
-        HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
-            first(2*segs.size());
-        List<label> next(segs.size(), -1);
-        forAll(segs, i)
+        // How each segment's ends moved (the copy now nearest to where it
+        // was; -1: gone, or beyond this processor's search), and at most
+        // how far
+        const List<label> now(sweptNow(segs));
+        List<FixedList<vector, 2>> move(now.size());
+        List<scalar> moveMax(now.size(), scalar(0));
+        forAll(now, j)
         {
-            const FixedList<label, 2> key{segs[i].fiber, segs[i].seg};
-            auto it = first.find(key);
-            if (it.found())
+            if (now[j] >= 0)
             {
-                next[i] = *it;
-                *it = i;
-            }
-            else
-            {
-                first.insert(key, i);
+                move[j][0] = segs[now[j]].a - sweptSegs_[j].a;
+                move[j][1] = segs[now[j]].b - sweptSegs_[j].b;
+                moveMax[j] = max(mag(move[j][0]), mag(move[j][1]));
             }
         }
 
-        // The copy nearest to where the segment was (a periodic image
-        // where it crossed a periodic patch or its partner was an image)
-        const auto nearest = [&](const label f, const label s, const point& a)
+        // The pairs of different fibers, the lower id first and of this
+        // processor (each pair on one processor); by fiber pair, those
+        // that grazed and those that touched at either end (seen there)
+        HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> grazed;
+        DynamicList<FixedList<label, 2>> seen;
+        for (const FixedList<label, 2>& ij : sweptCand_)
         {
-            label best = -1;
-            scalar dBest = GREAT;
-            const auto it = first.cfind(FixedList<label, 2>{f, s});
-            for (label i = it.found() ? *it : -1; i >= 0; i = next[i])
-            {
-                if (magSqr(segs[i].a - a) < dBest)
-                {
-                    dBest = magSqr(segs[i].a - a);
-                    best = i;
-                }
-            }
-            return best;
-        };
-
-        HashSet<pairKey, pairKey::Hash<>> grazed;
-        for (const sweptPair& p : swept_)
-        {
-            // A segment gone (or beyond this processor's reach) is not
-            // followed
-            const label iA = nearest(p.k[0], p.k[1], p.ends[0]);
-            const label iB = nearest(p.k[2], p.k[3], p.ends[2]);
-            if (iA < 0 || iB < 0)
+            // (the compact ids first: most candidates end here)
+            const label fP = sweptFiber_[ij[0]];
+            const label fQ = sweptFiber_[ij[1]];
+            if
+            (
+                fP < 0 || !(fP < (fQ < 0 ? -1 - fQ : fQ))
+             || now[ij[0]] < 0 || now[ij[1]] < 0
+            )
             {
                 continue;
             }
-            const segment& A = segs[iA];
-            const segment& B = segs[iB];
-            const FixedList<vector, 4> dp
-            {
-                A.a - p.ends[0], A.b - p.ends[1],
-                B.a - p.ends[2], B.b - p.ends[3]
-            };
+            const sweptSegment& P = sweptSegs_[ij[0]];
+            const sweptSegment& Q = sweptSegs_[ij[1]];
 
             // No point of one axis moved against one of the other by more
-            // than two ends did: a pair whose centres were farther apart
-            // than that, the half lengths and the touch cannot have met
-            const scalar touch = 0.5*(A.d + B.d) + range_;
-            const scalar gLow =
-                mag(0.5*(p.ends[0] + p.ends[1] - p.ends[2] - p.ends[3]))
-              - 0.5*(mag(A.b - A.a) + mag(B.b - B.a)) - touch;
-            const scalar dMax =
-                max
-                (
-                    max(mag(dp[0] - dp[2]), mag(dp[0] - dp[3])),
-                    max(mag(dp[1] - dp[2]), mag(dp[1] - dp[3]))
-                );
-            if (gLow < dMax && grazeTime(p.ends, dp, touch, 1) < 1)
+            // than the two segments' ends did: a pair whose axes were
+            // farther apart than that and the touch cannot have met
+            const scalar touch = 0.5*(P.d + Q.d) + range_;
+            const scalar gMax = moveMax[ij[0]] + moveMax[ij[1]] + touch;
+            if (axesApart(P.a, P.b, Q.a, Q.b) > gMax)
             {
-                grazed.insert(p.k);
+                continue;
+            }
+            const FixedList<vector, 2>& mP = move[ij[0]];
+            const FixedList<vector, 2>& mQ = move[ij[1]];
+            bool touches = false;
+            if
+            (
+                grazeTime
+                (
+                    {P.a, P.b, Q.a, Q.b}, {mP[0], mP[1], mQ[0], mQ[1]},
+                    touch, 1, &touches
+                ) < 1
+            )
+            {
+                grazed.insert(FixedList<label, 2>{P.fiber, Q.fiber});
+            }
+            if (touches)
+            {
+                seen.append(FixedList<label, 2>{P.fiber, Q.fiber});
             }
         }
-        nMissed_ += grazed.size();
+
+        // A graze of fibers touching at the interval's start or end by
+        // other segments (a contact that moved across a joint) was seen
+        if (grazed.size())
+        {
+            for (const FixedList<label, 2>& f : seen)
+            {
+                grazed.erase(f);
+            }
+            nMissed_ += grazed.size();
+        }
     }
 
-    // This interval's candidates of different fibers, the lower id first
-    // and of this processor (each pair on one processor)
-    swept_.clear();
-    for (const FixedList<label, 2>& ij : cand)
+    // This interval's candidates and segments for its end (the buffers
+    // swapped, kept for their capacity)
+    sweptCand_.swap(cand);
+    sweptSegs_.resize(segs.size());
+    sweptFiber_.resize(segs.size());
+    forAll(segs, i)
     {
-        const segment& Q = segs[ij[0]];
-        const segment& P = segs[ij[1]];
-        if (Q.local >= 0 && Q.fiber < P.fiber)
-        {
-            swept_.append
-            (
-                sweptPair
-                {
-                    pairKey{Q.fiber, Q.seg, P.fiber, P.seg},
-                    FixedList<point, 4>{Q.a, Q.b, P.a, P.b}
-                }
-            );
-        }
+        const segment& s = segs[i];
+        sweptSegs_[i] = sweptSegment{s.fiber, s.seg, s.a, s.b, s.d};
+        sweptFiber_[i] = s.local >= 0 ? s.fiber : -1 - s.fiber;
     }
     sweptEnd_ = t + h;
     sweptH_ = h;
+}
+
+
+Foam::List<Foam::label> Foam::fiberInteractions::contact::sweptNow
+(
+    const UList<segment>& segs
+) const
+{
+    // Where the fibers are the same, a segment is at its index of then
+    // (local segments in the fibers' order, then the images and other
+    // processors'), within the search distance of where it was (another
+    // copy is a period away)
+    List<label> now(sweptSegs_.size(), -1);
+    const scalar r2 = sqr(near_.r);
+    bool all = true;
+    forAll(sweptSegs_, j)
+    {
+        const sweptSegment& s = sweptSegs_[j];
+        if
+        (
+            j < segs.size() && segs[j].fiber == s.fiber
+         && segs[j].seg == s.seg && magSqr(segs[j].a - s.a) < r2
+        )
+        {
+            now[j] = j;
+        }
+        else
+        {
+            all = false;
+        }
+    }
+    if (all)
+    {
+        return now;
+    }
+
+    // The copies of each segment now (its own, its images, another
+    // processor's) as a list from the first, by fiber and segment
+    HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
+        first(2*segs.size());
+    List<label> next(segs.size(), -1);
+    forAll(segs, i)
+    {
+        const FixedList<label, 2> key{segs[i].fiber, segs[i].seg};
+        auto it = first.find(key);
+        if (it.found())
+        {
+            next[i] = *it;
+            *it = i;
+        }
+        else
+        {
+            first.insert(key, i);
+        }
+    }
+
+    // Of each segment then, the copy nearest to where it was (an image
+    // where it crossed a periodic patch, or where it was an image)
+    forAll(sweptSegs_, j)
+    {
+        if (now[j] >= 0)
+        {
+            continue;
+        }
+        const sweptSegment& s = sweptSegs_[j];
+        const auto it = first.cfind(FixedList<label, 2>{s.fiber, s.seg});
+        scalar dBest = GREAT;
+        for (label i = it.found() ? *it : -1; i >= 0; i = next[i])
+        {
+            if (magSqr(segs[i].a - s.a) < dBest)
+            {
+                dBest = magSqr(segs[i].a - s.a);
+                now[j] = i;
+            }
+        }
+    }
+    return now;
 }
 
 
