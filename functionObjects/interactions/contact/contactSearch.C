@@ -806,21 +806,9 @@ void Foam::fiberInteractions::contact::missedGrazes
     // one interval the ends' motion is not one straight path)
     if (sweptCand_.size() && mag(t - sweptEnd_) <= 1e-6*sweptH_)
     {
-        // How each segment's ends moved (the copy now nearest to where it
-        // was; -1: gone, or beyond this processor's search), and at most
-        // how far
-        const List<label> now(sweptNow(segs));
-        List<FixedList<vector, 2>> move(now.size());
-        List<scalar> moveMax(now.size(), scalar(0));
-        forAll(now, j)
-        {
-            if (now[j] >= 0)
-            {
-                move[j][0] = segs[now[j]].a - sweptSegs_[j].a;
-                move[j][1] = segs[now[j]].b - sweptSegs_[j].b;
-                moveMax[j] = max(mag(move[j][0]), mag(move[j][1]));
-            }
-        }
+        List<FixedList<vector, 2>> move;
+        List<scalar> moveMax;
+        sweptMotion(segs, move, moveMax);
 
         // The pairs of different fibers, the lower id first and of this
         // processor (each pair on one processor); by fiber pair, those
@@ -835,7 +823,7 @@ void Foam::fiberInteractions::contact::missedGrazes
             if
             (
                 fP < 0 || !(fP < (fQ < 0 ? -1 - fQ : fQ))
-             || now[ij[0]] < 0 || now[ij[1]] < 0
+             || moveMax[ij[0]] < 0 || moveMax[ij[1]] < 0
             )
             {
                 continue;
@@ -884,8 +872,19 @@ void Foam::fiberInteractions::contact::missedGrazes
         }
     }
 
-    // This interval's candidates and segments for its end (the buffers
-    // swapped, kept for their capacity)
+    keepSwept(t, h, segs, cand);
+}
+
+
+void Foam::fiberInteractions::contact::keepSwept
+(
+    const scalar t,
+    const scalar h,
+    const UList<segment>& segs,
+    DynamicList<FixedList<label, 2>>& cand
+)
+{
+    // The buffers swapped, kept for their capacity
     sweptCand_.swap(cand);
     sweptSegs_.resize(segs.size());
     sweptFiber_.resize(segs.size());
@@ -897,6 +896,29 @@ void Foam::fiberInteractions::contact::missedGrazes
     }
     sweptEnd_ = t + h;
     sweptH_ = h;
+}
+
+
+void Foam::fiberInteractions::contact::sweptMotion
+(
+    const UList<segment>& segs,
+    List<FixedList<vector, 2>>& move,
+    List<scalar>& moveMax
+) const
+{
+    const List<label> now(sweptNow(segs));
+    move.setSize(now.size());
+    moveMax.setSize(now.size());
+    forAll(now, j)
+    {
+        moveMax[j] = -1;
+        if (now[j] >= 0)
+        {
+            move[j][0] = segs[now[j]].a - sweptSegs_[j].a;
+            move[j][1] = segs[now[j]].b - sweptSegs_[j].b;
+            moveMax[j] = max(mag(move[j][0]), mag(move[j][1]));
+        }
+    }
 }
 
 
