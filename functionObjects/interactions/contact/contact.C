@@ -180,8 +180,6 @@ Foam::fiberInteractions::contact::contact
     windowSkin_(0.5),
     tcWindow_(-1),
     nMissed_(0),
-    sweptEnd_(-GREAT),
-    sweptH_(0),
     nLimited_(Zero)
 {
     read(dict);
@@ -923,14 +921,6 @@ void Foam::fiberInteractions::contact::interact
 )
 {
     hLast_ = h;
-    if (near_.valid)
-    {
-        missedGrazes(t, h, near_.segs, near_.cand);
-    }
-    else
-    {
-        sweptCand_.clear();
-    }
     DynamicList<segment> segs;
     DynamicList<FixedList<label, 2>> cand;
     pairsInReach(fibers, roles, segs, cand);
