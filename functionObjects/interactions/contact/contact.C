@@ -522,6 +522,39 @@ void Foam::fiberInteractions::contact::implicitSprings
 }
 
 
+Foam::fiberInteractions::contact::pairGeometry
+Foam::fiberInteractions::contact::geometry
+(
+    const segment& A,
+    const segment& B
+) const
+{
+    const segmentDistance::result r =
+        segmentDistance::closest(A.a, A.b, B.a, B.b);
+    const scalar dist = std::sqrt(r.distSqr);
+    pairGeometry g;
+    g.delta = 0.5*(A.d + B.d) - dist;
+    g.owns =
+        ownsContact(A, r.s, r.a - r.b) && ownsContact(B, r.t, r.b - r.a);
+    g.touching =
+        (g.delta > 0 || (cohesion_ > 0 && -g.delta < range_)) && g.owns;
+    g.close = g.owns && -g.delta < range_ + 0.1*min(A.d, B.d);
+
+    // Normal from B to A; axes that meet: normal to both
+    if (dist > 1e-12*(A.d + B.d))
+    {
+        g.n = (r.a - r.b)/dist;
+    }
+    else
+    {
+        const vector cr((A.b - A.a) ^ (B.b - B.a));
+        g.n = mag(cr) > 0 ? normalised(cr) : normalTo(A.b - A.a);
+    }
+    g.c = 0.5*((r.a - 0.5*A.d*g.n) + (r.b + 0.5*B.d*g.n));
+    return g;
+}
+
+
 bool Foam::fiberInteractions::contact::pairForce
 (
     const segment& A,
@@ -532,14 +565,10 @@ bool Foam::fiberInteractions::contact::pairForce
     pairLoad& p
 ) const
 {
-    const segmentDistance::result r =
-        segmentDistance::closest(A.a, A.b, B.a, B.b);
-    const scalar dist = std::sqrt(r.distSqr);
-    const scalar delta = 0.5*(A.d + B.d) - dist;
-    const bool owns =
-        ownsContact(A, r.s, r.a - r.b) && ownsContact(B, r.t, r.b - r.a);
-    p.touching = (delta > 0 || (cohesion_ > 0 && -delta < range_)) && owns;
-    p.close = owns && -delta < range_ + 0.1*min(A.d, B.d);
+    const pairGeometry g(geometry(A, B));
+    const scalar delta = g.delta;
+    p.touching = g.touching;
+    p.close = g.close;
     p.F = Zero;
     p.K = Zero;
     p.C = Zero;
@@ -552,20 +581,9 @@ bool Foam::fiberInteractions::contact::pairForce
     {
         return false;
     }
-
-    // Normal from B to A; axes that meet: normal to both
-    vector n;
-    if (dist > 1e-12*(A.d + B.d))
-    {
-        n = (r.a - r.b)/dist;
-    }
-    else
-    {
-        const vector cr((A.b - A.a) ^ (B.b - B.a));
-        n = mag(cr) > 0 ? normalised(cr) : normalTo(A.b - A.a);
-    }
+    const vector& n = g.n;
     p.n = n;
-    p.c = 0.5*((r.a - 0.5*A.d*n) + (r.b + 0.5*B.d*n));
+    p.c = g.c;
 
     const vector vA(A.v + (A.w ^ (p.c - A.x)));
     const vector vB(B.v + (B.w ^ (p.c - B.x)));

@@ -102,30 +102,14 @@ bool Foam::fiberInteractions::contact::constraintOf
     bool& close
 )
 {
-    // The pair from the lower fiber id (A): its closest points, overlap
-    // and normal, as pairForce
-    const segmentDistance::result r =
-        segmentDistance::closest(A.a, A.b, B.a, B.b);
-    const scalar dist = std::sqrt(r.distSqr);
-    const scalar delta = 0.5*(A.d + B.d) - dist;
-    const bool owns =
-        ownsContact(A, r.s, r.a - r.b) && ownsContact(B, r.t, r.b - r.a);
-    touching = (delta > 0 || (cohesion_ > 0 && -delta < range_)) && owns;
-    close = owns && -delta < range_ + 0.1*min(A.d, B.d);
-    vector n;
-    if (dist > 1e-12*(A.d + B.d))
-    {
-        n = (r.a - r.b)/dist;
-    }
-    else
-    {
-        const vector cr((A.b - A.a) ^ (B.b - B.a));
-        n =
-            mag(cr) > 0
-          ? normalised(cr)
-          : normalised((A.b - A.a) ^ vector(1, 2, 3));
-    }
-    cp = 0.5*((r.a - 0.5*A.d*n) + (r.b + 0.5*B.d*n));
+    // The pair from the lower fiber id (A), as pairForce sees it
+    const pairGeometry g(geometry(A, B));
+    const scalar delta = g.delta;
+    const bool owns = g.owns;
+    const vector& n = g.n;
+    touching = g.touching;
+    close = g.close;
+    cp = g.c;
 
     // A pair that could touch within the interval at the speeds it has
     // (twice over), or that attracts: a constraint (the law pushes only
