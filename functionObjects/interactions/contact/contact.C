@@ -180,6 +180,8 @@ Foam::fiberInteractions::contact::contact
     windowSkin_(0.5),
     tcWindow_(-1),
     nMissed_(0),
+    sweptEnd_(-GREAT),
+    sweptH_(0),
     nLimited_(Zero)
 {
     read(dict);
@@ -939,6 +941,14 @@ void Foam::fiberInteractions::contact::interact
 )
 {
     hLast_ = h;
+    if (near_.valid)
+    {
+        missedGrazes(t, h, near_.segs, near_.cand);
+    }
+    else
+    {
+        sweptCand_.clear();
+    }
     DynamicList<segment> segs;
     DynamicList<FixedList<label, 2>> cand;
     pairsInReach(fibers, roles, segs, cand);

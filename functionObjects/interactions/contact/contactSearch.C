@@ -218,6 +218,116 @@ boundBox segmentBox(const segment& s, const scalar r)
 }
 
 
+//- A lower bound on the distance of the segments ab and cd, without their
+//  closest points: the largest of the centres' distance less the half
+//  lengths, the gap of their boxes along any axis, and the distance of
+//  their lines (most candidate pairs cross at an angle)
+scalar axesApart
+(
+    const point& a,
+    const point& b,
+    const point& c,
+    const point& d
+)
+{
+    const vector dc(0.5*(a + b - c - d));
+    const vector hAB(0.5*(b - a));
+    const vector hCD(0.5*(d - c));
+    scalar low = mag(dc) - mag(hAB) - mag(hCD);
+    const vector box(cmptMag(dc) - cmptMag(hAB) - cmptMag(hCD));
+    low = max(low, cmptMax(box));
+    const vector n(hAB ^ hCD);
+    const scalar nn = magSqr(n);
+    if (nn > SMALL*magSqr(hAB)*magSqr(hCD))
+    {
+        low = max(low, mag(dc & n)/std::sqrt(nn));
+    }
+    return low;
+}
+
+
+//- Of two axes whose ends (p: A's two, then B's) move straight at their
+//  velocities v from time 0, surfaces touching at a distance touch: the
+//  time of their closest approach in (0, h) where they touch then but are
+//  apart at 0 and at h (a graze), h where there is none (touches: set
+//  where they touch at 0 or at h).  Golden section
+//  to a thousandth of h on the gap (convex in time for rigid
+//  translations, close to it over an interval)
+scalar grazeTime
+(
+    const FixedList<point, 4>& p,
+    const FixedList<vector, 4>& v,
+    const scalar touch,
+    const scalar h,
+    bool* touches = nullptr
+)
+{
+    const auto gap = [&](const scalar t)
+    {
+        const segmentDistance::result r =
+            segmentDistance::closest
+            (
+                p[0] + t*v[0], p[1] + t*v[1], p[2] + t*v[2], p[3] + t*v[3]
+            );
+        return mag(r.a - r.b) - touch;
+    };
+    const scalar g0 = gap(0);
+    const scalar gh = g0 > 0 ? gap(h) : 0;
+    if (!(gh > 0))
+    {
+        // Touching at the start or at the end: seen there
+        if (touches)
+        {
+            *touches = true;
+        }
+        return h;
+    }
+
+    // Points of the axes move at most at the largest relative speed of
+    // two ends: the gap stays above (g0 + gh - vMax h)/2
+    const scalar vMax =
+        max
+        (
+            max(mag(v[0] - v[2]), mag(v[0] - v[3])),
+            max(mag(v[1] - v[2]), mag(v[1] - v[3]))
+        );
+    if (g0 + gh > vMax*h)
+    {
+        return h;
+    }
+
+    // The closest approach: golden section to a thousandth of h
+    const scalar phi = 0.5*(std::sqrt(5.0) - 1);
+    scalar lo = 0, hi = h;
+    scalar t1 = hi - phi*(hi - lo), t2 = lo + phi*(hi - lo);
+    scalar f1 = gap(t1), f2 = gap(t2);
+    while (hi - lo > 1e-3*h)
+    {
+        if (f1 < f2)
+        {
+            hi = t2;
+            t2 = t1;
+            f2 = f1;
+            t1 = hi - phi*(hi - lo);
+            f1 = gap(t1);
+        }
+        else
+        {
+            lo = t1;
+            t1 = t2;
+            f1 = f2;
+            t2 = lo + phi*(hi - lo);
+            f2 = gap(t2);
+        }
+        if (min(f1, f2) < 0)
+        {
+            break;
+        }
+    }
+    return f1 < f2 ? (f1 < 0 ? t1 : h) : (f2 < 0 ? t2 : h);
+}
+
+
 } // End anonymous namespace
 
 
@@ -469,70 +579,16 @@ Foam::scalar Foam::fiberInteractions::contact::sweepLimit
     // The ends of both axes move at their velocities (straight paths over
     // the interval); along them the surfaces' gap is convex in time for
     // rigid translations, close to it over an interval
-    const scalar touch = 0.5*(A.d + B.d) + range_;
     const vector vA0(A.v + (A.w ^ (A.a - A.x)));
     const vector vA1(A.v + (A.w ^ (A.b - A.x)));
     const vector vB0(B.v + (B.w ^ (B.a - B.x)));
     const vector vB1(B.v + (B.w ^ (B.b - B.x)));
-    const auto gap = [&](const scalar t)
-    {
-        const segmentDistance::result r =
-            segmentDistance::closest
-            (
-                A.a + t*vA0, A.b + t*vA1, B.a + t*vB0, B.b + t*vB1
-            );
-        return mag(r.a - r.b) - touch;
-    };
-    const scalar g0 = gap(0);
-    const scalar gh = g0 > 0 ? gap(h) : 0;
-    if (!(gh > 0))
-    {
-        // Touching at the start or at the end: seen there
-        return h;
-    }
-
-    // Points of the axes move at most at the largest relative speed of
-    // two ends: the gap stays above (g0 + gh - vMax h)/2
-    const scalar vMax =
-        max
+    return
+        grazeTime
         (
-            max(mag(vA0 - vB0), mag(vA0 - vB1)),
-            max(mag(vA1 - vB0), mag(vA1 - vB1))
+            {A.a, A.b, B.a, B.b}, {vA0, vA1, vB0, vB1},
+            0.5*(A.d + B.d) + range_, h
         );
-    if (g0 + gh > vMax*h)
-    {
-        return h;
-    }
-
-    // The closest approach: golden section to a thousandth of h
-    const scalar phi = 0.5*(std::sqrt(5.0) - 1);
-    scalar lo = 0, hi = h;
-    scalar t1 = hi - phi*(hi - lo), t2 = lo + phi*(hi - lo);
-    scalar f1 = gap(t1), f2 = gap(t2);
-    while (hi - lo > 1e-3*h)
-    {
-        if (f1 < f2)
-        {
-            hi = t2;
-            t2 = t1;
-            f2 = f1;
-            t1 = hi - phi*(hi - lo);
-            f1 = gap(t1);
-        }
-        else
-        {
-            lo = t1;
-            t1 = t2;
-            f1 = f2;
-            t2 = lo + phi*(hi - lo);
-            f2 = gap(t2);
-        }
-        if (min(f1, f2) < 0)
-        {
-            break;
-        }
-    }
-    return f1 < f2 ? (f1 < 0 ? t1 : h) : (f2 < 0 ? t2 : h);
 }
 
 
@@ -735,6 +791,211 @@ Foam::scalar Foam::fiberInteractions::contact::sweptInterval
         }
     }
     return returnReduce(hs, minOp<scalar>());
+}
+
+
+void Foam::fiberInteractions::contact::missedGrazes
+(
+    const scalar t,
+    const scalar h,
+    const UList<segment>& segs,
+    DynamicList<FixedList<label, 2>>& cand
+)
+{
+    // The last interval's candidates, where it ends now (over more than
+    // one interval the ends' motion is not one straight path)
+    if (sweptCand_.size() && mag(t - sweptEnd_) <= 1e-6*sweptH_)
+    {
+        List<FixedList<vector, 2>> move;
+        List<scalar> moveMax;
+        sweptMotion(segs, move, moveMax);
+
+        // The pairs of different fibers, the lower id first and of this
+        // processor (each pair on one processor); by fiber pair, those
+        // that grazed and those that touched at either end (seen there)
+        HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> grazed;
+        DynamicList<FixedList<label, 2>> seen;
+        for (const FixedList<label, 2>& ij : sweptCand_)
+        {
+            // (the compact ids first: most candidates end here)
+            const label fP = sweptFiber_[ij[0]];
+            const label fQ = sweptFiber_[ij[1]];
+            if
+            (
+                fP < 0 || !(fP < (fQ < 0 ? -1 - fQ : fQ))
+             || moveMax[ij[0]] < 0 || moveMax[ij[1]] < 0
+            )
+            {
+                continue;
+            }
+            const sweptSegment& P = sweptSegs_[ij[0]];
+            const sweptSegment& Q = sweptSegs_[ij[1]];
+
+            // No point of one axis moved against one of the other by more
+            // than the two segments' ends did: a pair whose axes were
+            // farther apart than that and the touch cannot have met
+            const scalar touch = 0.5*(P.d + Q.d) + range_;
+            const scalar gMax = moveMax[ij[0]] + moveMax[ij[1]] + touch;
+            if (axesApart(P.a, P.b, Q.a, Q.b) > gMax)
+            {
+                continue;
+            }
+            const FixedList<vector, 2>& mP = move[ij[0]];
+            const FixedList<vector, 2>& mQ = move[ij[1]];
+            bool touches = false;
+            if
+            (
+                grazeTime
+                (
+                    {P.a, P.b, Q.a, Q.b}, {mP[0], mP[1], mQ[0], mQ[1]},
+                    touch, 1, &touches
+                ) < 1
+            )
+            {
+                grazed.insert(FixedList<label, 2>{P.fiber, Q.fiber});
+            }
+            if (touches)
+            {
+                seen.append(FixedList<label, 2>{P.fiber, Q.fiber});
+            }
+        }
+
+        // A graze of fibers touching at the interval's start or end by
+        // other segments (a contact that moved across a joint) was seen
+        if (grazed.size())
+        {
+            for (const FixedList<label, 2>& f : seen)
+            {
+                grazed.erase(f);
+            }
+            nMissed_ += grazed.size();
+        }
+    }
+
+    keepSwept(t, h, segs, cand);
+}
+
+
+void Foam::fiberInteractions::contact::keepSwept
+(
+    const scalar t,
+    const scalar h,
+    const UList<segment>& segs,
+    DynamicList<FixedList<label, 2>>& cand
+)
+{
+    // The buffers swapped, kept for their capacity
+    sweptCand_.swap(cand);
+    sweptSegs_.resize(segs.size());
+    sweptFiber_.resize(segs.size());
+    forAll(segs, i)
+    {
+        const segment& s = segs[i];
+        sweptSegs_[i] = sweptSegment{s.fiber, s.seg, s.a, s.b, s.d};
+        sweptFiber_[i] = s.local >= 0 ? s.fiber : -1 - s.fiber;
+    }
+    sweptEnd_ = t + h;
+    sweptH_ = h;
+}
+
+
+void Foam::fiberInteractions::contact::sweptMotion
+(
+    const UList<segment>& segs,
+    List<FixedList<vector, 2>>& move,
+    List<scalar>& moveMax
+) const
+{
+    const List<label> now(sweptNow(segs));
+    move.setSize(now.size());
+    moveMax.setSize(now.size());
+    forAll(now, j)
+    {
+        moveMax[j] = -1;
+        if (now[j] >= 0)
+        {
+            move[j][0] = segs[now[j]].a - sweptSegs_[j].a;
+            move[j][1] = segs[now[j]].b - sweptSegs_[j].b;
+            moveMax[j] = max(mag(move[j][0]), mag(move[j][1]));
+        }
+    }
+}
+
+
+Foam::List<Foam::label> Foam::fiberInteractions::contact::sweptNow
+(
+    const UList<segment>& segs
+) const
+{
+    // Where the fibers are the same, a segment is at its index of then
+    // (local segments in the fibers' order, then the images and other
+    // processors'), within the search distance of where it was (another
+    // copy is a period away)
+    List<label> now(sweptSegs_.size(), -1);
+    const scalar r2 = sqr(near_.r);
+    bool all = true;
+    forAll(sweptSegs_, j)
+    {
+        const sweptSegment& s = sweptSegs_[j];
+        if
+        (
+            j < segs.size() && segs[j].fiber == s.fiber
+         && segs[j].seg == s.seg && magSqr(segs[j].a - s.a) < r2
+        )
+        {
+            now[j] = j;
+        }
+        else
+        {
+            all = false;
+        }
+    }
+    if (all)
+    {
+        return now;
+    }
+
+    // The copies of each segment now (its own, its images, another
+    // processor's) as a list from the first, by fiber and segment
+    HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
+        first(2*segs.size());
+    List<label> next(segs.size(), -1);
+    forAll(segs, i)
+    {
+        const FixedList<label, 2> key{segs[i].fiber, segs[i].seg};
+        auto it = first.find(key);
+        if (it.found())
+        {
+            next[i] = *it;
+            *it = i;
+        }
+        else
+        {
+            first.insert(key, i);
+        }
+    }
+
+    // Of each segment then, the copy nearest to where it was (an image
+    // where it crossed a periodic patch, or where it was an image)
+    forAll(sweptSegs_, j)
+    {
+        if (now[j] >= 0)
+        {
+            continue;
+        }
+        const sweptSegment& s = sweptSegs_[j];
+        const auto it = first.cfind(FixedList<label, 2>{s.fiber, s.seg});
+        scalar dBest = GREAT;
+        for (label i = it.found() ? *it : -1; i >= 0; i = next[i])
+        {
+            if (magSqr(segs[i].a - s.a) < dBest)
+            {
+                dBest = magSqr(segs[i].a - s.a);
+                now[j] = i;
+            }
+        }
+    }
+    return now;
 }
 
 
