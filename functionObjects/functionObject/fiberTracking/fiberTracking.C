@@ -393,6 +393,7 @@ void Foam::functionObjects::fiberTracking::logStep() const
             &cloud_->interactions()
         );
     const label nMissed = cm ? cm->missedContacts() : 0;
+    const label nJumped = cm ? cm->jumpedFibers() : 0;
     const string bound
     (
         subStepStatistics::name(st.hMinLimit(), cloud_->control().ruleName())
@@ -411,8 +412,12 @@ void Foam::functionObjects::fiberTracking::logStep() const
     {
         Log << ", interactions: " << cloud_->nIntervals()
             << " intervals in " << cloud_->nWindows() << " windows ("
-            << cloud_->engagedFraction() << " of the fibers in them, "
-            << nMissed << " contacts missed), CPU time "
+            << cloud_->engagedFraction() << " of the fibers in them, ";
+        if (nJumped > 0)
+        {
+            Log << nJumped << " fibers put back from walls unchecked, ";
+        }
+        Log << nMissed << " contacts missed), CPU time "
             << cloud_->cpuInteractions() << " s";
     }
     if (Pstream::parRun())

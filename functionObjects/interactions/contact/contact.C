@@ -180,6 +180,7 @@ Foam::fiberInteractions::contact::contact
     windowSkin_(0.5),
     tcWindow_(-1),
     nMissed_(0),
+    nJumped_(0),
     sweptEnd_(-GREAT),
     sweptH_(0),
     nLimited_(Zero)

@@ -808,13 +808,26 @@ void Foam::fiberInteractions::contact::missedGrazes
     {
         List<FixedList<vector, 2>> move;
         List<scalar> moveMax;
-        sweptMotion(segs, move, moveMax);
+        List<scalar> bend;
+        sweptMotion(segs, move, moveMax, bend);
 
         // The pairs of different fibers, the lower id first and of this
         // processor (each pair on one processor); by fiber pair, those
         // that grazed and those that touched at either end (seen there)
         HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> grazed;
         DynamicList<FixedList<label, 2>> seen;
+
+        // The fibers of this processor put where they are by other than
+        // their motion (their pairs left out: their paths are not known)
+        labelHashSet jumped;
+        forAll(moveMax, j)
+        {
+            if (moveMax[j] < -1.5 && sweptFiber_[j] >= 0)
+            {
+                jumped.insert(sweptSegs_[j].fiber);
+            }
+        }
+        nJumped_ += jumped.size();
         for (const FixedList<label, 2>& ij : sweptCand_)
         {
             // (the compact ids first: most candidates end here)
@@ -842,14 +855,18 @@ void Foam::fiberInteractions::contact::missedGrazes
             }
             const FixedList<vector, 2>& mP = move[ij[0]];
             const FixedList<vector, 2>& mQ = move[ij[1]];
+            const FixedList<point, 4> p{P.a, P.b, Q.a, Q.b};
+            const FixedList<vector, 4> m{mP[0], mP[1], mQ[0], mQ[1]};
             bool touches = false;
+
+            // A graze along the straight paths that is deeper than the
+            // paths can stray from them: certain (a shallower one may be
+            // an artefact of the straight paths)
+            const scalar margin = bend[ij[0]] + bend[ij[1]];
             if
             (
-                grazeTime
-                (
-                    {P.a, P.b, Q.a, Q.b}, {mP[0], mP[1], mQ[0], mQ[1]},
-                    touch, 1, &touches
-                ) < 1
+                grazeTime(p, m, touch, 1, &touches) < 1
+             && (margin < SMALL*touch || grazeTime(p, m, touch - margin, 1) < 1)
             )
             {
                 grazed.insert(FixedList<label, 2>{P.fiber, Q.fiber});
@@ -891,7 +908,12 @@ void Foam::fiberInteractions::contact::keepSwept
     forAll(segs, i)
     {
         const segment& s = segs[i];
-        sweptSegs_[i] = sweptSegment{s.fiber, s.seg, s.a, s.b, s.d};
+        sweptSegs_[i] =
+            sweptSegment
+            {
+                s.fiber, s.seg, s.a, s.b,
+                s.v + (s.w ^ (s.a - s.x)), s.v + (s.w ^ (s.b - s.x)), s.d
+            };
         sweptFiber_[i] = s.local >= 0 ? s.fiber : -1 - s.fiber;
     }
     sweptEnd_ = t + h;
@@ -899,24 +921,68 @@ void Foam::fiberInteractions::contact::keepSwept
 }
 
 
+Foam::fiberInteractions::contact::segment
+Foam::fiberInteractions::contact::unwrapped
+(
+    const segment& s,
+    const point& a0
+) const
+{
+    // A copy found a period away from where the segment was (it crossed a
+    // periodic patch and no image of it is near there): its image nearest
+    // to there (a path through the domain would sweep across every pair)
+    segment best(s);
+    if (magSqr(s.a - a0) > sqr(near_.r))
+    {
+        for (const vectorTensorTransform& T : periodic_)
+        {
+            const point a(T.transformPosition(s.a));
+            if (magSqr(a - a0) < magSqr(best.a - a0))
+            {
+                best = image(s, T);
+            }
+        }
+    }
+    return best;
+}
+
+
 void Foam::fiberInteractions::contact::sweptMotion
 (
     const UList<segment>& segs,
     List<FixedList<vector, 2>>& move,
-    List<scalar>& moveMax
+    List<scalar>& moveMax,
+    List<scalar>& bend
 ) const
 {
     const List<label> now(sweptNow(segs));
     move.setSize(now.size());
     moveMax.setSize(now.size());
+    bend.setSize(now.size());
     forAll(now, j)
     {
         moveMax[j] = -1;
+        bend[j] = 0;
         if (now[j] >= 0)
         {
-            move[j][0] = segs[now[j]].a - sweptSegs_[j].a;
-            move[j][1] = segs[now[j]].b - sweptSegs_[j].b;
+            const sweptSegment& o = sweptSegs_[j];
+            const segment s(unwrapped(segs[now[j]], o.a));
+            move[j][0] = s.a - o.a;
+            move[j][1] = s.b - o.b;
             moveMax[j] = max(mag(move[j][0]), mag(move[j][1]));
+            const vector va(s.v + (s.w ^ (s.a - s.x)));
+            const vector vb(s.v + (s.w ^ (s.b - s.x)));
+            bend[j] = 0.25*sweptH_*max(mag(va - o.va), mag(vb - o.vb));
+
+            // Where the velocity of an end moves between its values at the
+            // two ends of the interval, the end moves at most h times the
+            // larger speed
+            const scalar vMax =
+                max(max(mag(va), mag(vb)), max(mag(o.va), mag(o.vb)));
+            if (moveMax[j] > 2*sweptH_*vMax + SMALL*o.d)
+            {
+                moveMax[j] = -2;
+            }
         }
     }
 }
