@@ -995,18 +995,22 @@ Foam::List<Foam::label> Foam::fiberInteractions::contact::sweptNow
 {
     // Where the fibers are the same, a segment is at its index of then
     // (local segments in the fibers' order, then the images and other
-    // processors'), within the search distance of where it was (another
+    // processors'): a fiber's own segment is its only copy of its own (a
+    // period away where it crossed a periodic patch: unwrapped), an image
+    // or another's within the search distance of where it was (another
     // copy is a period away)
     List<label> now(sweptSegs_.size(), -1);
     const scalar r2 = sqr(near_.r);
     bool all = true;
+    bool localAll = true;
     forAll(sweptSegs_, j)
     {
         const sweptSegment& s = sweptSegs_[j];
         if
         (
             j < segs.size() && segs[j].fiber == s.fiber
-         && segs[j].seg == s.seg && magSqr(segs[j].a - s.a) < r2
+         && segs[j].seg == s.seg
+         && (sweptFiber_[j] >= 0 || magSqr(segs[j].a - s.a) < r2)
         )
         {
             now[j] = j;
@@ -1014,6 +1018,7 @@ Foam::List<Foam::label> Foam::fiberInteractions::contact::sweptNow
         else
         {
             all = false;
+            localAll = localAll && sweptFiber_[j] < 0;
         }
     }
     if (all)
@@ -1022,41 +1027,87 @@ Foam::List<Foam::label> Foam::fiberInteractions::contact::sweptNow
     }
 
     // The copies of each segment now (its own, its images, another
-    // processor's) as a list from the first, by fiber and segment
-    HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
-        first(2*segs.size());
-    List<label> next(segs.size(), -1);
-    forAll(segs, i)
+    // processor's) as a list from the first, by fiber and segment; where
+    // every segment of this processor's fibers is at its index of then
+    // (the usual case: the images, which follow them, change with the
+    // skin), only the copies that are not this processor's own
+    const auto nearest = [&](const label i0)
     {
-        const FixedList<label, 2> key{segs[i].fiber, segs[i].seg};
-        auto it = first.find(key);
-        if (it.found())
+        HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
+            first(2*(segs.size() - i0) + 1);
+        List<label> next(segs.size(), -1);
+        for (label i = i0; i < segs.size(); ++i)
         {
-            next[i] = *it;
-            *it = i;
+            const FixedList<label, 2> key{segs[i].fiber, segs[i].seg};
+            auto it = first.find(key);
+            if (it.found())
+            {
+                next[i] = *it;
+                *it = i;
+            }
+            else
+            {
+                first.insert(key, i);
+            }
         }
-        else
+
+        // Of each segment then, the copy nearest to where it was (an
+        // image where it crossed a periodic patch, or where it was an
+        // image); whether every one has a copy
+        bool found = true;
+        forAll(sweptSegs_, j)
         {
-            first.insert(key, i);
+            if (now[j] >= 0 && (i0 == 0 || now[j] == j))
+            {
+                continue;
+            }
+            const sweptSegment& s = sweptSegs_[j];
+            const auto it = first.cfind(FixedList<label, 2>{s.fiber, s.seg});
+            scalar dBest = GREAT;
+            for (label i = it.found() ? *it : -1; i >= 0; i = next[i])
+            {
+                if (magSqr(segs[i].a - s.a) < dBest)
+                {
+                    dBest = magSqr(segs[i].a - s.a);
+                    now[j] = i;
+                }
+            }
+            found = found && now[j] >= 0;
+        }
+        return found;
+    };
+    label i0 = 0;
+    if (localAll)
+    {
+        while (i0 < segs.size() && segs[i0].local >= 0)
+        {
+            ++i0;
         }
     }
-
-    // Of each segment then, the copy nearest to where it was (an image
-    // where it crossed a periodic patch, or where it was an image)
-    forAll(sweptSegs_, j)
+    if (!nearest(i0) && i0 > 0)
     {
-        if (now[j] >= 0)
+        // An image that is gone (its segment farther from the periodic
+        // patch than the search's reach now): its fiber's own segment, a
+        // period away (unwrapped), by the first segment of each fiber
+        Map<label> firstOf(i0/2 + 16);
+        for (label i = 0; i < i0; ++i)
         {
-            continue;
-        }
-        const sweptSegment& s = sweptSegs_[j];
-        const auto it = first.cfind(FixedList<label, 2>{s.fiber, s.seg});
-        scalar dBest = GREAT;
-        for (label i = it.found() ? *it : -1; i >= 0; i = next[i])
-        {
-            if (magSqr(segs[i].a - s.a) < dBest)
+            if (segs[i].seg == 0)
             {
-                dBest = magSqr(segs[i].a - s.a);
+                firstOf.insert(segs[i].fiber, i);
+            }
+        }
+        forAll(sweptSegs_, j)
+        {
+            const auto it = firstOf.cfind(sweptSegs_[j].fiber);
+            const label i = it.found() ? *it + sweptSegs_[j].seg : -1;
+            if
+            (
+                now[j] < 0 && i >= 0 && i < i0
+             && segs[i].fiber == sweptSegs_[j].fiber
+             && segs[i].seg == sweptSegs_[j].seg
+            )
+            {
                 now[j] = i;
             }
         }
