@@ -26,6 +26,7 @@ Description
 #include "contactIslands.H"
 #include "point.H"
 #include "mathematicalConstants.H"
+#include "transform.H"
 #include "IOstreams.H"
 
 #include <Eigen/Dense>
@@ -510,12 +511,116 @@ void testContactIslandsOrder()
 }
 
 
+void testContactIslandsTurned()
+{
+    // The same island with some bodies given in turned frames (as a
+    // partner beyond a rotational periodic patch is): each such body's
+    // velocities, mobility and levers in its own frame, turned into the
+    // contact's by R.  The forces in the contacts' frame and the end
+    // velocities (turned back) must be those of the island as it is
+    std::mt19937 gen(11);
+    const scalar h = 1e-4;
+    contactIslands P;
+    List<rigid> bodies;
+    randomProblem(P, bodies, 8, 0.5, h, gen, true);
+    contactIslands T;
+    List<tensor> R(P.nBodies(), tensor::I);
+    for (label i = 0; i < P.nBodies(); ++i)
+    {
+        if (i % 2)
+        {
+            R[i] = rotationTensor(randomDir(gen), randomDir(gen));
+        }
+        contactIslands::body B(P.bodyAt(i));
+        const tensor& Ri = R[i];
+        for (label k = 0; k < 2; ++k)
+        {
+            const vector v(B.vFree[3*k], B.vFree[3*k + 1], B.vFree[3*k + 2]);
+            const vector vt(Ri.T() & v);
+            for (label j = 0; j < 3; ++j)
+            {
+                B.vFree[3*k + j] = vt[j];
+            }
+        }
+        // M' = diag(R^T) M diag(R)
+        Eigen::Matrix<double, 6, 6> M, D(Eigen::Matrix<double, 6, 6>::Zero());
+        for (label r = 0; r < 6; ++r)
+        {
+            for (label s = 0; s < 6; ++s)
+            {
+                M(r, s) = B.mobility[6*r + s];
+            }
+        }
+        for (label r = 0; r < 3; ++r)
+        {
+            for (label s = 0; s < 3; ++s)
+            {
+                D(r, s) = Ri(r, s);
+                D(3 + r, 3 + s) = Ri(r, s);
+            }
+        }
+        const Eigen::Matrix<double, 6, 6> Mt(D.transpose()*M*D);
+        for (label r = 0; r < 6; ++r)
+        {
+            for (label s = 0; s < 6; ++s)
+            {
+                B.mobility[6*r + s] = Mt(r, s);
+            }
+        }
+        T.bodyAt(T.addBody(1)) = B;
+    }
+    for (label ci = 0; ci < P.nContacts(); ++ci)
+    {
+        contactIslands::contact c(P.contactAt(ci));
+        c.Ra = R[c.a];
+        c.ra = R[c.a].T() & c.ra;
+        c.Rb = R[c.b];
+        c.rb = R[c.b].T() & c.rb;
+        T.addContact(c);
+    }
+    P.solve(h);
+    T.solve(h);
+    scalar fMax = 0, df = 0, dv = 0, vMax = 0;
+    for (label ci = 0; ci < P.nContacts(); ++ci)
+    {
+        fMax = max(fMax, mag(P.contactAt(ci).f));
+        df = max(df, mag(P.contactAt(ci).f - T.contactAt(ci).f));
+    }
+    for (label i = 0; i < P.nBodies(); ++i)
+    {
+        const scalarList& v = P.bodyAt(i).vEnd;
+        const scalarList& w = T.bodyAt(i).vEnd;
+        for (label k = 0; k < 2; ++k)
+        {
+            const vector a(v[3*k], v[3*k + 1], v[3*k + 2]);
+            const vector b(w[3*k], w[3*k + 1], w[3*k + 2]);
+            vMax = max(vMax, mag(a));
+            dv = max(dv, mag(a - (R[i] & b)));
+        }
+    }
+    label sticking = 0;
+    for (label ci = 0; ci < P.nContacts(); ++ci)
+    {
+        sticking += P.contactAt(ci).sticks;
+    }
+    check
+    (
+        "contactIslands.turnedFrames",
+        df < 1e-9*fMax && dv < 1e-9*vMax && fMax > 0,
+        fmt(max(df/fMax, dv/vMax), 0, max(df/fMax, dv/vMax))
+      + " (forces and end velocities, 4 of 8 bodies turned, "
+      + std::to_string(sticking) + " of 7 contacts sticking)"
+    );
+}
+
+
 void testContactIslands()
 {
     testContactIslandsLaw();
     testContactIslandsMomentum();
     testContactIslandsIncline();
     testContactIslandsOrder();
+    testContactIslandsTurned();
 }
 
 

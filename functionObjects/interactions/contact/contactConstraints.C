@@ -70,24 +70,36 @@ Foam::label Foam::fiberInteractions::contact::islandBody
 }
 
 
-void Foam::fiberInteractions::contact::checkTranslated
+Foam::vectorTensorTransform Foam::fiberInteractions::contact::imageOf
 (
     const fiber& f,
     const segment& P
 ) const
 {
-    // An image across a rotational periodic patch would need the
-    // partner's response turned into the image's frame
+    // The periodic transform that puts the fiber's centre where the
+    // image's is and its segment along the image's (the translation of a
+    // periodic patch, or its rotation and translation)
     const vector z(f.segmentDirection(f.R(), P.seg));
-    if (mag(normalised(P.b - P.a) - z) > 1e-9)
+    const vector zP(normalised(P.b - P.a));
+    const scalar tol = 1e-9*max(f.length(), mag(P.x));
+    for (const vectorTensorTransform& T : periodic_)
     {
-        FatalErrorInFunction
-            << "Entry 'scheme constraints' of 'interactions': fiber "
-            << P.fiber << " touches a fiber across a rotational periodic"
-            << " patch, which the constraint form does not take yet (only"
-            << " translational ones); use 'scheme implicit' here"
-            << exit(FatalError);
+        const vector zT(T.hasR() ? (T.R() & z) : z);
+        if
+        (
+            mag(T.transformPosition(f.position()) - P.x) <= tol
+         && mag(zT - zP) <= 1e-9
+        )
+        {
+            return T;
+        }
     }
+    FatalErrorInFunction
+        << "Entry 'scheme constraints' of 'interactions': fiber " << P.fiber
+        << " has an image at " << P.x << " that no periodic transform of"
+        << " the mesh puts there (from " << f.position() << ")"
+        << exit(FatalError);
+    return vectorTensorTransform::I;
 }
 
 
@@ -192,19 +204,23 @@ void Foam::fiberInteractions::contact::constrain
         {
             continue;
         }
+        // A partner beyond a periodic patch: its fiber's frame turns into
+        // the image's by the patch's rotation R, x_fiber = R^T (x - x_P)
+        // + the fiber's centre
         const label pLocal = P.local >= 0 ? P.local : localOf[P.fiber];
-        if (P.local < 0)
-        {
-            checkTranslated(fibers[pLocal], P);
-        }
+        const fiber& fP = fibers[pLocal];
+        const tensor R
+        (
+            P.local >= 0 ? tensor::I : imageOf(fP, P).R()
+        );
         const pairKey k{Q.fiber, Q.seg, P.fiber, P.seg};
-        addConstraint(Q, P, pLocal, h, cp, c);
+        addConstraint(Q, P, pLocal, R, h, cp, c);
         islandPairs_.append
         (
             constraintPair
             {
-                k, cp, Q.local, pLocal,
-                fibers[pLocal].position() - P.x, Q.m > 0
+                k, cp, Q.local, pLocal, R,
+                fP.position() - (R.T() & P.x), Q.m > 0
             }
         );
     }
@@ -230,6 +246,7 @@ void Foam::fiberInteractions::contact::addConstraint
     const segment& Q,
     const segment& P,
     const label pLocal,
+    const tensor& R,
     const scalar h,
     const point& cp,
     contactIslands::contact& c
@@ -250,7 +267,8 @@ void Foam::fiberInteractions::contact::addConstraint
     // The island's A is the moving side: the lower id, or its partner
     // where the lower id is fixed (then the normal, spring and force
     // turn).  A partner beyond a periodic patch (an image) moves as its
-    // fiber, translated: its lever from the image's centre
+    // fiber, turned by R: its lever from the image's centre turned back
+    // into the fiber's frame
     const bool qMoves = Q.m > 0;
     const segment& A = qMoves ? Q : P;
     const segment& B = qMoves ? P : Q;
@@ -260,6 +278,16 @@ void Foam::fiberInteractions::contact::addConstraint
     c.b = B.m > 0 ? islandBody(qMoves ? pLocal : Q.local, h) : -1;
     c.rb = cp - B.x;
     c.vB = B.v + (B.w ^ c.rb);
+    if (qMoves)
+    {
+        c.Rb = R;
+        c.rb = R.T() & c.rb;
+    }
+    else
+    {
+        c.Ra = R;
+        c.ra = R.T() & c.ra;
+    }
     c.n *= sgn;
     c.fExtra *= sgn;
     c.xi0 = sgn*xi;
@@ -275,7 +303,7 @@ void Foam::fiberInteractions::contact::applyConstraints
 )
 {
     // The force on the lower id (Q) of each pair, -f on its partner at the
-    // same point (an image's fiber: moved by the image's translation),
+    // same point (an image's fiber: both turned back into its frame),
     // summed in the keys' order; the springs at the end under both keys
     DynamicList<pointForce> parts;
     forAll(islandPairs_, i)
@@ -287,7 +315,7 @@ void Foam::fiberInteractions::contact::applyConstraints
         const vector xi(cp.qMoves ? c.xiEnd : -c.xiEnd);
         const pairKey kr{k[2], k[3], k[0], k[1]};
         next.set(k, xi);
-        next.set(kr, xi);
+        next.set(kr, cp.R.T() & xi);
         if (cp.qMoves)
         {
             parts.append(pointForce{k, cp.q, k[1], fQ, cp.c});
@@ -296,7 +324,11 @@ void Foam::fiberInteractions::contact::applyConstraints
         {
             parts.append
             (
-                pointForce{kr, cp.p, k[3], -fQ, cp.c + cp.shift}
+                pointForce
+                {
+                    kr, cp.p, k[3], -(cp.R.T() & fQ),
+                    (cp.R.T() & cp.c) + cp.shift
+                }
             );
         }
     }

@@ -56,6 +56,13 @@ struct side
     vector r;
     scalar sign;
     Eigen::MatrixXd G;
+
+    //- Turns the body's vectors into the contact's frame (G takes the
+    //  contact's force: turned back into the body's frame)
+    tensor R;
+
+    //- The velocity of the side's point, in the contact's frame
+    vector at(const scalarList& v) const;
 };
 
 
@@ -78,6 +85,12 @@ vector velocityAt(const scalarList& v, const label p, const vector& r)
     const vector V(v[o], v[o + 1], v[o + 2]);
     const vector w(v[o + 3], v[o + 4], v[o + 5]);
     return V + (w ^ r);
+}
+
+
+vector side::at(const scalarList& v) const
+{
+    return R & velocityAt(v, piece, r);
 }
 
 
@@ -158,16 +171,42 @@ std::vector<side> contactSides
     const contactIslands::contact& c
 )
 {
+    // The response to the contact's force: to the force turned into the
+    // body's frame (G R^T)
+    const auto turned = [](const Eigen::MatrixXd& G, const tensor& R)
+    {
+        if (R == tensor::I)
+        {
+            return G;
+        }
+        Eigen::Matrix3d Rt;
+        for (label i = 0; i < 3; ++i)
+        {
+            for (label j = 0; j < 3; ++j)
+            {
+                Rt(i, j) = R(j, i);
+            }
+        }
+        return Eigen::MatrixXd(G*Rt);
+    };
     std::vector<side> s;
     s.push_back
     (
-        side{c.a, c.pa, c.ra, 1, unitResponse(bodies[c.a], c.pa, c.ra)}
+        side
+        {
+            c.a, c.pa, c.ra, 1,
+            turned(unitResponse(bodies[c.a], c.pa, c.ra), c.Ra), c.Ra
+        }
     );
     if (c.b >= 0)
     {
         s.push_back
         (
-            side{c.b, c.pb, c.rb, -1, -unitResponse(bodies[c.b], c.pb, c.rb)}
+            side
+            {
+                c.b, c.pb, c.rb, -1,
+                -turned(unitResponse(bodies[c.b], c.pb, c.rb), c.Rb), c.Rb
+            }
         );
     }
     return s;
@@ -200,7 +239,7 @@ mat3 response
                 {
                     dv[j] = o.G(j, k);
                 }
-                w.col(k) += t.sign*toEigen(velocityAt(dv, t.piece, t.r));
+                w.col(k) += t.sign*toEigen(t.at(dv));
             }
         }
     }
@@ -219,7 +258,7 @@ vector relative
     vector u(Zero);
     for (const side& t : sides)
     {
-        u += t.sign*velocityAt(bodies[t.body].vEnd, t.piece, t.r);
+        u += t.sign*t.at(bodies[t.body].vEnd);
     }
     return c.b >= 0 ? u : u - c.vB;
 }
