@@ -817,17 +817,7 @@ void Foam::fiberInteractions::contact::missedGrazes
         HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> grazed;
         DynamicList<FixedList<label, 2>> seen;
 
-        // The fibers of this processor put where they are by other than
-        // their motion (their pairs left out: their paths are not known)
-        labelHashSet jumped;
-        forAll(moveMax, j)
-        {
-            if (moveMax[j] < -1.5 && sweptFiber_[j] >= 0)
-            {
-                jumped.insert(sweptSegs_[j].fiber);
-            }
-        }
-        nJumped_ += jumped.size();
+        countJumped(moveMax);
         for (const FixedList<label, 2>& ij : sweptCand_)
         {
             // (the compact ids first: most candidates end here)
@@ -890,6 +880,25 @@ void Foam::fiberInteractions::contact::missedGrazes
     }
 
     keepSwept(t, h, segs, cand);
+}
+
+
+void Foam::fiberInteractions::contact::countJumped
+(
+    const UList<scalar>& moveMax
+)
+{
+    // The fibers of this processor put where they are by other than their
+    // motion (their pairs are left out: their paths are not known)
+    labelHashSet jumped;
+    forAll(moveMax, j)
+    {
+        if (moveMax[j] < -1.5 && sweptFiber_[j] >= 0)
+        {
+            jumped.insert(sweptSegs_[j].fiber);
+        }
+    }
+    nJumped_ += jumped.size();
 }
 
 
@@ -1026,56 +1035,10 @@ Foam::List<Foam::label> Foam::fiberInteractions::contact::sweptNow
         return now;
     }
 
-    // The copies of each segment now (its own, its images, another
-    // processor's) as a list from the first, by fiber and segment; where
-    // every segment of this processor's fibers is at its index of then
-    // (the usual case: the images, which follow them, change with the
-    // skin), only the copies that are not this processor's own
-    const auto nearest = [&](const label i0)
-    {
-        HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
-            first(2*(segs.size() - i0) + 1);
-        List<label> next(segs.size(), -1);
-        for (label i = i0; i < segs.size(); ++i)
-        {
-            const FixedList<label, 2> key{segs[i].fiber, segs[i].seg};
-            auto it = first.find(key);
-            if (it.found())
-            {
-                next[i] = *it;
-                *it = i;
-            }
-            else
-            {
-                first.insert(key, i);
-            }
-        }
-
-        // Of each segment then, the copy nearest to where it was (an
-        // image where it crossed a periodic patch, or where it was an
-        // image); whether every one has a copy
-        bool found = true;
-        forAll(sweptSegs_, j)
-        {
-            if (now[j] >= 0 && (i0 == 0 || now[j] == j))
-            {
-                continue;
-            }
-            const sweptSegment& s = sweptSegs_[j];
-            const auto it = first.cfind(FixedList<label, 2>{s.fiber, s.seg});
-            scalar dBest = GREAT;
-            for (label i = it.found() ? *it : -1; i >= 0; i = next[i])
-            {
-                if (magSqr(segs[i].a - s.a) < dBest)
-                {
-                    dBest = magSqr(segs[i].a - s.a);
-                    now[j] = i;
-                }
-            }
-            found = found && now[j] >= 0;
-        }
-        return found;
-    };
+    // Where every segment of this processor's fibers is at its index of
+    // then (the usual case: the images, which follow them, change with
+    // the skin), only the copies that are not this processor's own, then
+    // the own segments of images that are gone
     label i0 = 0;
     if (localAll)
     {
@@ -1084,35 +1047,100 @@ Foam::List<Foam::label> Foam::fiberInteractions::contact::sweptNow
             ++i0;
         }
     }
-    if (!nearest(i0) && i0 > 0)
+    if (!nearestCopies(segs, i0, now) && i0 > 0)
     {
-        // An image that is gone (its segment farther from the periodic
-        // patch than the search's reach now): its fiber's own segment, a
-        // period away (unwrapped), by the first segment of each fiber
-        Map<label> firstOf(i0/2 + 16);
-        for (label i = 0; i < i0; ++i)
+        ownCopies(segs, i0, now);
+    }
+    return now;
+}
+
+
+bool Foam::fiberInteractions::contact::nearestCopies
+(
+    const UList<segment>& segs,
+    const label i0,
+    List<label>& now
+) const
+{
+    // The copies of each segment now from i0 on (its own, its images,
+    // another processor's) as a list from the first, by fiber and segment
+    HashTable<label, FixedList<label, 2>, FixedList<label, 2>::Hash<>>
+        first(2*(segs.size() - i0) + 1);
+    List<label> next(segs.size(), -1);
+    for (label i = i0; i < segs.size(); ++i)
+    {
+        const FixedList<label, 2> key{segs[i].fiber, segs[i].seg};
+        auto it = first.find(key);
+        if (it.found())
         {
-            if (segs[i].seg == 0)
-            {
-                firstOf.insert(segs[i].fiber, i);
-            }
+            next[i] = *it;
+            *it = i;
         }
-        forAll(sweptSegs_, j)
+        else
         {
-            const auto it = firstOf.cfind(sweptSegs_[j].fiber);
-            const label i = it.found() ? *it + sweptSegs_[j].seg : -1;
-            if
-            (
-                now[j] < 0 && i >= 0 && i < i0
-             && segs[i].fiber == sweptSegs_[j].fiber
-             && segs[i].seg == sweptSegs_[j].seg
-            )
+            first.insert(key, i);
+        }
+    }
+
+    // Of each segment then not found at its index, the copy nearest to
+    // where it was (an image where it crossed a periodic patch, or where
+    // it was an image)
+    bool found = true;
+    forAll(sweptSegs_, j)
+    {
+        if (now[j] >= 0)
+        {
+            continue;
+        }
+        const sweptSegment& s = sweptSegs_[j];
+        const auto it = first.cfind(FixedList<label, 2>{s.fiber, s.seg});
+        scalar dBest = GREAT;
+        for (label i = it.found() ? *it : -1; i >= 0; i = next[i])
+        {
+            if (magSqr(segs[i].a - s.a) < dBest)
             {
+                dBest = magSqr(segs[i].a - s.a);
                 now[j] = i;
             }
         }
+        found = found && now[j] >= 0;
     }
-    return now;
+    return found;
+}
+
+
+void Foam::fiberInteractions::contact::ownCopies
+(
+    const UList<segment>& segs,
+    const label i0,
+    List<label>& now
+) const
+{
+    // An image that is gone (its segment farther from the periodic patch
+    // than the search's reach now): its fiber's own segment, a period away
+    // (unwrapped), by the first segment of each fiber
+    Map<label> firstOf(i0/2 + 16);
+    for (label i = 0; i < i0; ++i)
+    {
+        if (segs[i].seg == 0)
+        {
+            firstOf.insert(segs[i].fiber, i);
+        }
+    }
+    forAll(sweptSegs_, j)
+    {
+        const auto it = firstOf.cfind(sweptSegs_[j].fiber);
+        const label i = it.found() ? *it + sweptSegs_[j].seg : -1;
+        if
+        (
+            now[j] < 0 && i >= 0 && i < i0
+         && segs[i].fiber == sweptSegs_[j].fiber
+         && segs[i].seg == sweptSegs_[j].seg
+        )
+        {
+            now[j] = i;
+        }
+    }
 }
 
 
