@@ -2435,6 +2435,7 @@ void testFlexibleState();
 void testFlexibleSegmentLoads();
 void testFlexibleLinks();
 void testFlexibleBuckling();
+void testFlexibleResponse();
 void testContactIslands();
 
 
@@ -2476,6 +2477,7 @@ int main()
         testFlexibleSegmentLoads();
         testFlexibleLinks();
         testFlexibleBuckling();
+        testFlexibleResponse();
         testContactIslands();
     }
     catch (const Foam::error& err)

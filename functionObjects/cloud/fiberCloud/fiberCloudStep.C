@@ -111,10 +111,6 @@ bool Foam::fiberCloud::fiberResponse
 )
 {
     const fiber& f = fibers_[fi];
-    if (f.flexible())
-    {
-        return false;
-    }
     List<fluidSample> s(f.nSegments());
     if (!sampleSegments(fi, Zero, f.R(), s))
     {
@@ -124,7 +120,16 @@ bool Foam::fiberCloud::fiberResponse
     (
         buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_
     );
-    fiberIntegrator::response(f, s, hydro_, g, h, mobility, vFree);
+    if (f.flexible())
+    {
+        // The chain's own implicit Euler step (flexibleChain), which it
+        // takes over an interval under contact forces
+        flexWork_.response(f, s, hydro_, g, h, mobility, vFree);
+    }
+    else
+    {
+        fiberIntegrator::response(f, s, hydro_, g, h, mobility, vFree);
+    }
     return true;
 }
 

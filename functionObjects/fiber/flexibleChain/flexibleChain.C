@@ -292,6 +292,44 @@ void Foam::flexibleChain::addInteraction
 }
 
 
+void Foam::flexibleChain::hydroLoads
+(
+    const fiber& f,
+    const UList<fluidSample>& s,
+    const fiberHydrodynamics& hydro,
+    const vector& g,
+    vectorList* Fh
+)
+{
+    // Per segment the hydrodynamic law linearised about its own velocity
+    // (the force f + A v + B w, the torque t + C v + D w), and gravity
+    const label N = f.nSegments();
+    const tensor R(f.R());
+    loads_.setSize(N);
+    forAll(loads_, i)
+    {
+        fiberHydrodynamics::segmentLaw k;
+        hydro.law
+        (
+            f, i, R, s[i], f.segmentVelocity(R, i), f.segmentOmega(i), k
+        );
+        const vector Omega(s[i].Omega());
+        segmentLoad& ld = loads_[i];
+        ld.f = (k.Kuu & s[i].U) + (k.Kuw & Omega) + k.f0;
+        ld.A = k.Kuu;
+        ld.B = k.Kuw;
+        ld.t = (k.Kwu & s[i].U) + (k.Kww & Omega) + k.t0;
+        ld.C = k.Kwu;
+        ld.D = k.Kww;
+        if (Fh)
+        {
+            (*Fh)[i] = ld.f;
+        }
+        ld.f += f.segmentMass(i)*g;
+    }
+}
+
+
 void Foam::flexibleChain::advance
 (
     fiber& f,
@@ -307,35 +345,17 @@ void Foam::flexibleChain::advance
     const bool segLoads = ext && label(ext->seg.size()) == N;
     const tensor R(f.R());
     List<segmentLoad>& loads = loads_;
-    loads.setSize(N);
     vectorList& Fh = Fh_;
     Fh.setSize(N);
-    forAll(loads, i)
+    hydroLoads(f, s, hydro, g, forces ? &Fh : nullptr);
+    if (segLoads)
     {
-        fiberHydrodynamics::segmentLaw k;
-        hydro.law
-        (
-            f, i, R, s[i], f.segmentVelocity(R, i), f.segmentOmega(i), k
-        );
-        const vector Omega(s[i].Omega());
-        segmentLoad& ld = loads[i];
-        ld.f = (k.Kuu & s[i].U) + (k.Kuw & Omega) + k.f0;
-        ld.A = k.Kuu;
-        ld.B = k.Kuw;
-        ld.t = (k.Kwu & s[i].U) + (k.Kww & Omega) + k.t0;
-        ld.C = k.Kwu;
-        ld.D = k.Kww;
-        if (forces)
-        {
-            Fh[i] = ld.f;
-        }
-        ld.f += f.segmentMass(i)*g;
-        if (segLoads)
+        forAll(loads, i)
         {
             const point c(f.position() + f.segmentOffset(R, i));
             addInteraction
             (
-                ext->seg[i], c, f.segmentDirection(R, i), h, ld
+                ext->seg[i], c, f.segmentDirection(R, i), h, loads[i]
             );
         }
     }
@@ -345,10 +365,24 @@ void Foam::flexibleChain::advance
     {
         addLinkForces(*ext, loads);
     }
+    // The joints' closing keeps the angular momentum but under implicit
+    // springs (their records follow the step's own motion); contacts as
+    // constraints hold forces only (implicit: one step per interval)
+    bool springs = linked;
+    if (segLoads)
+    {
+        for (const fiberIntegrator::load& l : ext->seg)
+        {
+            springs =
+                springs || l.Kxx != tensor::zero || l.Ktt != tensor::zero
+             || l.Cxx != tensor::zero || l.Ctt != tensor::zero;
+        }
+    }
     assign(f);
     step
     (
-        loads, h, !(ext && ext->implicit), linked ? &ext->links : nullptr
+        loads, h, !(ext && ext->implicit && springs),
+        linked ? &ext->links : nullptr
     );
     if (forces)
     {
@@ -362,6 +396,68 @@ void Foam::flexibleChain::advance
         }
     }
     writeBack(f, h);
+}
+
+
+void Foam::flexibleChain::response
+(
+    const fiber& f,
+    const UList<fluidSample>& s,
+    const fiberHydrodynamics& hydro,
+    const vector& g,
+    const scalar h,
+    scalarList& mobility,
+    scalarList& vFree
+)
+{
+    // The system of step, assembled and factored in the present
+    // configuration; its solution without loads (free), then with a unit
+    // force and a unit moment on each segment in turn (the joints'
+    // constraints homogeneous: the difference is linear in the load)
+    const label N = f.nSegments();
+    hydroLoads(f, s, hydro, g, nullptr);
+    assign(f);
+    if (!work_)
+    {
+        work_.reset(new blocks());
+    }
+    blocks& B = *work_;
+    B.setSize(N);
+    B.ghc = Zero;
+    for (label i = 0; i < N; ++i)
+    {
+        assembleSegment(i, loads_[i], h, B);
+    }
+    for (label i = clamped_ ? 0 : 1; i < N; ++i)
+    {
+        assembleJoint(i, h, B);
+    }
+    factor(B);
+    solveRHS(B, B.rV, B.rW, B.gh, B.ghc);
+    const label n = 6*N;
+    vFree.setSize(n);
+    mobility.setSize(n*n);
+    const auto store = [&](scalarList& v, const label stride, const label o)
+    {
+        for (label i = 0; i < N; ++i)
+        {
+            for (label k = 0; k < 3; ++k)
+            {
+                v[stride*(6*i + k) + o] = B.V[i][k];
+                v[stride*(6*i + 3 + k) + o] = B.W[i][k];
+            }
+        }
+    };
+    store(vFree, 1, 0);
+    vectorList rV(N, Zero), rW(N, Zero), gh(max(N - 1, label(0)), Zero);
+    for (label col = 0; col < n; ++col)
+    {
+        const label i = col/6, k = col % 6;
+        (k < 3 ? rV : rW)[i][k % 3] = 1;
+        solveRHS(B, rV, rW, gh, Zero);
+        (k < 3 ? rV : rW)[i][k % 3] = 0;
+        store(mobility, n, col);
+    }
 }
 
 

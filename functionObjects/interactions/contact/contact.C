@@ -770,7 +770,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
     // The longest interval allowed; the rest of the step is split into
     // equal parts no longer than that
     scalar hMax = GREAT;
-    if (implicit_ && !warnedFlexible_)
+    if (implicit_ && !constraints_ && !warnedFlexible_)
     {
         bool flexible = false;
         forAll(fibers, fi)

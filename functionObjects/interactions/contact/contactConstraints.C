@@ -44,6 +44,7 @@ struct pointForce
 
 Foam::label Foam::fiberInteractions::contact::islandBody
 (
+    const segment& S,
     const label local,
     const scalar h
 )
@@ -53,20 +54,34 @@ Foam::label Foam::fiberInteractions::contact::islandBody
     {
         return *it;
     }
-    const label b = islands_.addBody(1);
+    const label b = islands_.addBody(S.flexible ? S.nSeg : 1);
     contactIslands::body& B = islands_.bodyAt(b);
     if (!response_ || !response_(local, h, B.mobility, B.vFree))
     {
         FatalErrorInFunction
-            << "Entry 'scheme constraints' of 'interactions': a fiber in"
-            << " contact cannot say how it responds over the interval"
-            << " (a flexible fiber, or one with a segment on another"
-            << " processor's part): the constraint form takes rigid"
-            << " fibers only so far; use 'scheme implicit' or 'scheme"
-            << " explicit' here" << exit(FatalError);
+            << "Entry 'scheme constraints' of 'interactions': fiber "
+            << S.fiber << " in contact cannot say how it responds over the"
+            << " interval (a segment on another processor's part): the"
+            << " constraint form takes serial runs only so far"
+            << exit(FatalError);
     }
     bodyOf_.insert(local, b);
     return b;
+}
+
+
+Foam::point Foam::fiberInteractions::contact::ownCentre
+(
+    const fiber& f,
+    const segment& P
+)
+{
+    // The centre P.x stands for: the fiber's, or a flexible fiber's
+    // segment's (which moves as a body of its own)
+    return
+        P.flexible
+      ? f.position() + f.segmentOffset(f.R(), P.seg)
+      : f.position();
 }
 
 
@@ -81,13 +96,14 @@ Foam::vectorTensorTransform Foam::fiberInteractions::contact::imageOf
     // periodic patch, or its rotation and translation)
     const vector z(f.segmentDirection(f.R(), P.seg));
     const vector zP(normalised(P.b - P.a));
+    const point x(ownCentre(f, P));
     const scalar tol = 1e-9*max(f.length(), mag(P.x));
     for (const vectorTensorTransform& T : periodic_)
     {
         const vector zT(T.hasR() ? (T.R() & z) : z);
         if
         (
-            mag(T.transformPosition(f.position()) - P.x) <= tol
+            mag(T.transformPosition(x) - P.x) <= tol
          && mag(zT - zP) <= 1e-9
         )
         {
@@ -97,7 +113,7 @@ Foam::vectorTensorTransform Foam::fiberInteractions::contact::imageOf
     FatalErrorInFunction
         << "Entry 'scheme constraints' of 'interactions': fiber " << P.fiber
         << " has an image at " << P.x << " that no periodic transform of"
-        << " the mesh puts there (from " << f.position() << ")"
+        << " the mesh puts there (from " << x << ")"
         << exit(FatalError);
     return vectorTensorTransform::I;
 }
@@ -180,7 +196,13 @@ void Foam::fiberInteractions::contact::constrain
     {
         const segment& Q = segs[ij[0]];
         const segment& P = segs[ij[1]];
-        if (Q.fiber >= P.fiber || Q.local < 0)
+        // (a flexible fiber against itself, where the search lets its
+        // segments touch: once, from the lower segment)
+        if
+        (
+            Q.fiber > P.fiber || Q.local < 0
+         || (Q.fiber == P.fiber && !(Q.seg < P.seg))
+        )
         {
             continue;
         }
@@ -220,7 +242,7 @@ void Foam::fiberInteractions::contact::constrain
             constraintPair
             {
                 k, cp, Q.local, pLocal, R,
-                fP.position() - (R.T() & P.x), Q.m > 0
+                ownCentre(fP, P) - (R.T() & P.x), Q.m > 0
             }
         );
     }
@@ -273,9 +295,11 @@ void Foam::fiberInteractions::contact::addConstraint
     const segment& A = qMoves ? Q : P;
     const segment& B = qMoves ? P : Q;
     const scalar sgn = qMoves ? 1 : -1;
-    c.a = islandBody(qMoves ? Q.local : pLocal, h);
+    c.a = islandBody(A, qMoves ? Q.local : pLocal, h);
+    c.pa = A.flexible ? A.seg : 0;
     c.ra = cp - A.x;
-    c.b = B.m > 0 ? islandBody(qMoves ? pLocal : Q.local, h) : -1;
+    c.b = B.m > 0 ? islandBody(B, qMoves ? pLocal : Q.local, h) : -1;
+    c.pb = B.flexible ? B.seg : 0;
     c.rb = cp - B.x;
     c.vB = B.v + (B.w ^ c.rb);
     if (qMoves)
