@@ -417,21 +417,7 @@ void Foam::flexibleChain::response
     const label N = f.nSegments();
     hydroLoads(f, s, hydro, g, nullptr);
     assign(f);
-    if (!work_)
-    {
-        work_.reset(new blocks());
-    }
-    blocks& B = *work_;
-    B.setSize(N);
-    B.ghc = Zero;
-    for (label i = 0; i < N; ++i)
-    {
-        assembleSegment(i, loads_[i], h, B);
-    }
-    for (label i = clamped_ ? 0 : 1; i < N; ++i)
-    {
-        assembleJoint(i, h, B);
-    }
+    blocks& B = assemble(loads_, h);
     factor(B);
     solveRHS(B, B.rV, B.rW, B.gh, B.ghc);
     const label n = 6*N;
@@ -679,6 +665,33 @@ void Foam::flexibleChain::assembleSegment
     B.R[i] = ld.C;
     B.S[i] = I/h + ld.D;
     B.rW[i] = (I & w_[i])/h - (w_[i] ^ (I & w_[i])) + ld.t;
+}
+
+
+Foam::flexibleChain::blocks& Foam::flexibleChain::assemble
+(
+    const UList<segmentLoad>& loads,
+    const scalar h
+)
+{
+    // The step's system in the present configuration: every segment's
+    // rows, then every joint's (the clamp's where clamped)
+    if (!work_)
+    {
+        work_.reset(new blocks());
+    }
+    blocks& B = *work_;
+    B.setSize(nSegments());
+    B.ghc = Zero;
+    forAll(loads, i)
+    {
+        assembleSegment(i, loads[i], h, B);
+    }
+    for (label i = clamped_ ? 0 : 1; i < nSegments(); ++i)
+    {
+        assembleJoint(i, h, B);
+    }
+    return B;
 }
 
 
@@ -961,21 +974,7 @@ void Foam::flexibleChain::step
         updateDirections();
     }
     IGCurrent_ = false;
-    if (!work_)
-    {
-        work_.reset(new blocks());
-    }
-    blocks& B = *work_;
-    B.setSize(N);
-    B.ghc = Zero;
-    for (label i = 0; i < N; ++i)
-    {
-        assembleSegment(i, loads[i], h, B);
-    }
-    for (label i = clamped_ ? 0 : 1; i < N; ++i)
-    {
-        assembleJoint(i, h, B);
-    }
+    blocks& B = assemble(loads, h);
 
     if (links && !links->empty())
     {
