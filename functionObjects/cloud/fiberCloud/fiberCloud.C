@@ -201,9 +201,13 @@ Foam::fiberCloud::fiberCloud
     readWallRule(dict);
     interactions_->setResponder
     (
-        [this](const label fi, const scalar h, scalarList& M, scalarList& v)
+        [this]
+        (
+            const labelUList& fis, const scalar h, List<scalarList>& M,
+            List<scalarList>& v
+        )
         {
-            return fiberResponse(fi, h, M, v);
+            fiberResponses(fis, h, M, v);
         }
     );
     label nPeriodic = 0;

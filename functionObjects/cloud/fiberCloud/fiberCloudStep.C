@@ -102,35 +102,63 @@ bool Foam::fiberCloud::sampleSegments
 }
 
 
-bool Foam::fiberCloud::fiberResponse
+void Foam::fiberCloud::fiberResponses
 (
-    const label fi,
+    const labelUList& fis,
     const scalar h,
-    scalarList& mobility,
-    scalarList& vFree
+    List<scalarList>& mobility,
+    List<scalarList>& vFree
 )
 {
-    const fiber& f = fibers_[fi];
-    List<fluidSample> s(f.nSegments());
-    if (!sampleSegments(fi, Zero, f.R(), s))
+    // The flow at every segment now (a segment on another processor's
+    // part asked of it), then each fiber's step without and with loads
+    labelList offset(fis.size() + 1, 0);
+    forAll(fis, k)
     {
-        return false;
+        offset[k + 1] = offset[k] + fibers_[fis[k]].nSegments();
     }
-    const vector g
-    (
-        buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_
-    );
-    if (f.flexible())
+    List<fluidSample> s(offset.last());
+    DynamicList<fluidSampler::request> reqs;
+    DynamicList<remoteSegment> remote;
+    labelList at(fibers_.size(), -1);
+    forAll(fis, k)
     {
-        // The chain's own implicit Euler step (flexibleChain), which it
-        // takes over an interval under contact forces
-        flexWork_.response(f, s, hydro_, g, h, mobility, vFree);
+        const fiber& f = fibers_[fis[k]];
+        at[fis[k]] = k;
+        SubList<fluidSample> sf(s, f.nSegments(), offset[k]);
+        sampleSegments(fis[k], Zero, f.R(), sf, &reqs, &remote);
     }
-    else
+    List<fluidSample> answers(reqs.size());
+    sampler_.exchange(reqs, answers);
+    forAll(remote, r)
     {
-        fiberIntegrator::response(f, s, hydro_, g, h, mobility, vFree);
+        fluidSampler::toStartFrame(remote[r].h, answers[r]);
+        s[offset[at[remote[r].fiber]] + remote[r].segment] = answers[r];
     }
-    return true;
+    mobility.setSize(fis.size());
+    vFree.setSize(fis.size());
+    forAll(fis, k)
+    {
+        const fiber& f = fibers_[fis[k]];
+        const SubList<fluidSample> sf(s, f.nSegments(), offset[k]);
+        const vector g
+        (
+            buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_
+        );
+        if (f.flexible())
+        {
+            // The chain's own implicit Euler step (flexibleChain), which
+            // it takes over an interval under contact forces
+            flexWork_.response(f, sf, hydro_, g, h, mobility[k], vFree[k]);
+        }
+        else
+        {
+            fiberIntegrator::response
+            (
+                f, sf, hydro_, g, h, mobility[k], vFree[k]
+            );
+        }
+    }
 }
 
 

@@ -394,6 +394,7 @@ void Foam::functionObjects::fiberTracking::logStep() const
         );
     const label nMissed = cm ? cm->missedContacts() : 0;
     const label nJumped = cm ? cm->jumpedFibers() : 0;
+    const label nAcross = cm && Pstream::parRun() ? cm->pairsAcross() : 0;
     const string bound
     (
         subStepStatistics::name(st.hMinLimit(), cloud_->control().ruleName())
@@ -416,6 +417,10 @@ void Foam::functionObjects::fiberTracking::logStep() const
         if (nJumped > 0)
         {
             Log << nJumped << " fibers put back from walls unchecked, ";
+        }
+        if (nAcross > 0)
+        {
+            Log << nAcross << " constraint pairs solved across processors, ";
         }
         Log << nMissed << " contacts missed), CPU time "
             << cloud_->cpuInteractions() << " s";

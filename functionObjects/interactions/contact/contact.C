@@ -181,6 +181,7 @@ Foam::fiberInteractions::contact::contact
     tcWindow_(-1),
     nMissed_(0),
     nJumped_(0),
+    nAcross_(0),
     sweptEnd_(-GREAT),
     sweptH_(0),
     nLimited_(Zero)
@@ -335,14 +336,6 @@ void Foam::fiberInteractions::contact::readScheme(const dictionary& dict)
     }
     implicit_ = scheme != "explicit";
     constraints_ = scheme == "constraints";
-    if (constraints_ && Pstream::parRun())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'scheme constraints': not yet in parallel (an island"
-            << " of fibers that touch across processors is not solved by"
-            << " one owner yet); use 'scheme implicit' in parallel runs"
-            << exit(FatalIOError);
-    }
 }
 
 

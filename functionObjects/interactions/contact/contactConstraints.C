@@ -19,34 +19,12 @@ Description
 
 #include <algorithm>
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-//- A force on a fiber of this processor at a point, by pair key (summed
-//  in the key's order)
-struct pointForce
-{
-    fiberInteractions::contact::pairKey key;
-    label local;
-    label seg;
-    vector F;
-    point c;
-};
-
-} // End anonymous namespace
-
-
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 Foam::label Foam::fiberInteractions::contact::islandBody
 (
-    const segment& S,
-    const label local,
-    const scalar h
+    const fiber& f,
+    const label local
 )
 {
     const auto it = bodyOf_.cfind(local);
@@ -54,68 +32,67 @@ Foam::label Foam::fiberInteractions::contact::islandBody
     {
         return *it;
     }
-    const label b = islands_.addBody(S.flexible ? S.nSeg : 1);
-    contactIslands::body& B = islands_.bodyAt(b);
-    if (!response_ || !response_(local, h, B.mobility, B.vFree))
-    {
-        FatalErrorInFunction
-            << "Entry 'scheme constraints' of 'interactions': fiber "
-            << S.fiber << " in contact cannot say how it responds over the"
-            << " interval (a segment on another processor's part): the"
-            << " constraint form takes serial runs only so far"
-            << exit(FatalError);
-    }
+    const label b = islands_.addBody(f.flexible() ? f.nSegments() : 1);
     bodyOf_.insert(local, b);
+    bodyFiber_.append(f.id());
+    bodyLocal_.append(local);
     return b;
 }
 
 
-Foam::point Foam::fiberInteractions::contact::ownCentre
-(
-    const fiber& f,
-    const segment& P
-)
+void Foam::fiberInteractions::contact::respond(const scalar h)
 {
-    // The centre P.x stands for: the fiber's, or a flexible fiber's
-    // segment's (which moves as a body of its own)
-    return
-        P.flexible
-      ? f.position() + f.segmentOffset(f.R(), P.seg)
-      : f.position();
+    // Every body of this processor's fibers: its response over h (all
+    // processors together: a segment on another's part is sampled there)
+    if (!response_)
+    {
+        FatalErrorInFunction
+            << "Entry 'scheme constraints' of 'interactions': no cloud to"
+            << " say how the fibers respond" << abort(FatalError);
+    }
+    DynamicList<label> fis(bodyLocal_.size());
+    DynamicList<label> bs(bodyLocal_.size());
+    forAll(bodyLocal_, b)
+    {
+        if (bodyLocal_[b] >= 0)
+        {
+            fis.append(bodyLocal_[b]);
+            bs.append(b);
+        }
+    }
+    List<scalarList> M;
+    List<scalarList> v;
+    response_(fis, h, M, v);
+    forAll(bs, k)
+    {
+        contactIslands::body& B = islands_.bodyAt(bs[k]);
+        B.mobility.transfer(M[k]);
+        B.vFree.transfer(v[k]);
+    }
 }
 
 
-Foam::vectorTensorTransform Foam::fiberInteractions::contact::imageOf
-(
-    const fiber& f,
-    const segment& P
-) const
+Foam::label Foam::fiberInteractions::contact::remoteBody(const segment& S)
 {
-    // The periodic transform that puts the fiber's centre where the
-    // image's is and its segment along the image's (the translation of a
-    // periodic patch, or its rotation and translation)
-    const vector z(f.segmentDirection(f.R(), P.seg));
-    const vector zP(normalised(P.b - P.a));
-    const point x(ownCentre(f, P));
-    const scalar tol = 1e-9*max(f.length(), mag(P.x));
-    for (const vectorTensorTransform& T : periodic_)
+    const auto it = remoteBody_.cfind(S.fiber);
+    if (it.found())
     {
-        const vector zT(T.hasR() ? (T.R() & z) : z);
-        if
-        (
-            mag(T.transformPosition(x) - P.x) <= tol
-         && mag(zT - zP) <= 1e-9
-        )
-        {
-            return T;
-        }
+        return *it;
     }
-    FatalErrorInFunction
-        << "Entry 'scheme constraints' of 'interactions': fiber " << P.fiber
-        << " has an image at " << P.x << " that no periodic transform of"
-        << " the mesh puts there (from " << x << ")"
-        << exit(FatalError);
-    return vectorTensorTransform::I;
+    const label b = islands_.addBody(S.flexible ? S.nSeg : 1);
+    remoteBody_.insert(S.fiber, b);
+    bodyFiber_.append(S.fiber);
+    bodyLocal_.append(-1);
+    return b;
+}
+
+
+Foam::tensor Foam::fiberInteractions::contact::turnR(const label turn) const
+{
+    return
+        turn >= 0 && periodic_[turn].hasR()
+      ? periodic_[turn].R()
+      : tensor::I;
 }
 
 
@@ -181,9 +158,9 @@ void Foam::fiberInteractions::contact::constrain
     DynamicList<FixedList<label, 2>>& close
 )
 {
-    // Each pair once, from the side of the lower fiber id, where that
-    // fiber is this processor's (a partner beyond a periodic patch is an
-    // image of one of its fibers: serial, so every fiber is here)
+    // Each pair once, from the processor of the lower fiber id (a partner
+    // beyond a periodic patch is an image of a fiber, of this processor or
+    // another's); the partner's processor told of it
     Map<label> localOf(2*fibers.size());
     forAll(fibers, fi)
     {
@@ -191,7 +168,12 @@ void Foam::fiberInteractions::contact::constrain
     }
     islands_.clear();
     bodyOf_.clear();
+    bodyFiber_.clear();
+    bodyLocal_.clear();
+    remoteBody_.clear();
     islandPairs_.clear();
+    islandContacts_.clear();
+    List<DynamicList<FixedList<label, 5>>> notes(Pstream::nProcs());
     for (const FixedList<label, 2>& ij : cand)
     {
         const segment& Q = segs[ij[0]];
@@ -200,51 +182,28 @@ void Foam::fiberInteractions::contact::constrain
         // segments touch: once, from the lower segment)
         if
         (
-            Q.fiber > P.fiber || Q.local < 0
-         || (Q.fiber == P.fiber && !(Q.seg < P.seg))
+            Q.fiber < P.fiber ? Q.local >= 0
+          : Q.fiber == P.fiber && Q.seg < P.seg && Q.local >= 0
         )
         {
-            continue;
+            decidePair(fibers, localOf, Q, P, h, notes, touching, close);
         }
-        contactIslands::contact c;
-        point cp;
-        bool isTouching = false;
-        bool isClose = false;
-        const bool acts =
-            constraintOf(Q, P, h, c, cp, isTouching, isClose);
-        if (isClose)
+    }
+    sortPending();
+    if (Pstream::parRun())
+    {
+        labelHashSet told;
+        tellPartners(fibers, localOf, notes, told, touching, close);
+        respond(h);
+        shipIslands(told);
+    }
+    else
+    {
+        respond(h);
+        forAll(islandContacts_, i)
         {
-            close.append(FixedList<label, 2>{Q.fiber, P.fiber});
-            close.append(FixedList<label, 2>{P.fiber, Q.fiber});
+            islandPairs_[i].slot = islands_.addContact(islandContacts_[i]);
         }
-        if (isTouching)
-        {
-            touching.append(FixedList<label, 2>{Q.fiber, P.fiber});
-            touching.append(FixedList<label, 2>{P.fiber, Q.fiber});
-        }
-        if (!acts || !(Q.m > 0 || P.m > 0))
-        {
-            continue;
-        }
-        // A partner beyond a periodic patch: its fiber's frame turns into
-        // the image's by the patch's rotation R, x_fiber = R^T (x - x_P)
-        // + the fiber's centre
-        const label pLocal = P.local >= 0 ? P.local : localOf[P.fiber];
-        const fiber& fP = fibers[pLocal];
-        const tensor R
-        (
-            P.local >= 0 ? tensor::I : imageOf(fP, P).R()
-        );
-        const pairKey k{Q.fiber, Q.seg, P.fiber, P.seg};
-        addConstraint(Q, P, pLocal, R, h, cp, c);
-        islandPairs_.append
-        (
-            constraintPair
-            {
-                k, cp, Q.local, pLocal, R,
-                ownCentre(fP, P) - (R.T() & P.x), Q.m > 0
-            }
-        );
     }
     islands_.solve(h);
     const contactIslands::statistics& st = islands_.stats();
@@ -259,16 +218,79 @@ void Foam::fiberInteractions::contact::constrain
             << " forces of the last sweep are used.  Said once per run"
             << endl;
     }
-    applyConstraints(fibers, next, loads);
+    collectResults();
+    applyConstraints(fibers, localOf, next, loads);
+}
+
+
+void Foam::fiberInteractions::contact::decidePair
+(
+    const PtrList<fiber>& fibers,
+    const Map<label>& localOf,
+    const segment& Q,
+    const segment& P,
+    const scalar h,
+    UList<DynamicList<FixedList<label, 5>>>& notes,
+    DynamicList<FixedList<label, 2>>& touching,
+    DynamicList<FixedList<label, 2>>& close
+)
+{
+    contactIslands::contact c;
+    point cp;
+    bool isTouching = false;
+    bool isClose = false;
+    const bool acts = constraintOf(Q, P, h, c, cp, isTouching, isClose);
+    const bool remote = P.local < 0 && !localOf.found(P.fiber);
+    if (remote)
+    {
+        notes[P.proc].append
+        (
+            FixedList<label, 5>
+            {
+                P.fiber, Q.fiber, isTouching, isClose, acts && P.m > 0
+            }
+        );
+    }
+    if (isClose)
+    {
+        close.append(FixedList<label, 2>{Q.fiber, P.fiber});
+        if (!remote)
+        {
+            close.append(FixedList<label, 2>{P.fiber, Q.fiber});
+        }
+    }
+    if (isTouching)
+    {
+        touching.append(FixedList<label, 2>{Q.fiber, P.fiber});
+        if (!remote)
+        {
+            touching.append(FixedList<label, 2>{P.fiber, Q.fiber});
+        }
+    }
+    if (!acts || !(Q.m > 0 || P.m > 0))
+    {
+        return;
+    }
+    const label pLocal =
+        P.local >= 0 ? P.local : remote ? -1 : localOf[P.fiber];
+    addConstraint(fibers, Q, P, pLocal, h, cp, c);
+    islandPairs_.append
+    (
+        constraintPair
+        {
+            {Q.fiber, Q.seg, P.fiber, P.seg}, cp, Q.local, pLocal, P.proc,
+            P.turn, Q.m > 0, P.m > 0, -1, Zero, Zero
+        }
+    );
 }
 
 
 void Foam::fiberInteractions::contact::addConstraint
 (
+    const PtrList<fiber>& fibers,
     const segment& Q,
     const segment& P,
     const label pLocal,
-    const tensor& R,
     const scalar h,
     const point& cp,
     contactIslands::contact& c
@@ -290,18 +312,25 @@ void Foam::fiberInteractions::contact::addConstraint
     // where the lower id is fixed (then the normal, spring and force
     // turn).  A partner beyond a periodic patch (an image) moves as its
     // fiber, turned by R: its lever from the image's centre turned back
-    // into the fiber's frame
+    // into the fiber's frame.  A partner of another processor is a body
+    // that stands for it (the master's solve fills it)
+    const auto bodyOf = [&](const segment& S, const label local)
+    {
+        return
+            local >= 0 ? islandBody(fibers[local], local) : remoteBody(S);
+    };
     const bool qMoves = Q.m > 0;
     const segment& A = qMoves ? Q : P;
     const segment& B = qMoves ? P : Q;
     const scalar sgn = qMoves ? 1 : -1;
-    c.a = islandBody(A, qMoves ? Q.local : pLocal, h);
+    c.a = bodyOf(A, qMoves ? Q.local : pLocal);
     c.pa = A.flexible ? A.seg : 0;
     c.ra = cp - A.x;
-    c.b = B.m > 0 ? islandBody(B, qMoves ? pLocal : Q.local, h) : -1;
+    c.b = B.m > 0 ? bodyOf(B, qMoves ? pLocal : Q.local) : -1;
     c.pb = B.flexible ? B.seg : 0;
     c.rb = cp - B.x;
     c.vB = B.v + (B.w ^ c.rb);
+    const tensor R(turnR(P.turn));
     if (qMoves)
     {
         c.Rb = R;
@@ -315,46 +344,91 @@ void Foam::fiberInteractions::contact::addConstraint
     c.n *= sgn;
     c.fExtra *= sgn;
     c.xi0 = sgn*xi;
-    islands_.addContact(c);
+    islandContacts_.append(c);
+}
+
+
+void Foam::fiberInteractions::contact::sortPending()
+{
+    labelList order(identity(islandPairs_.size()));
+    std::sort
+    (
+        order.begin(), order.end(),
+        [this](const label i, const label j)
+        {
+            return islandPairs_[i].key < islandPairs_[j].key;
+        }
+    );
+    DynamicList<constraintPair> pairs(islandPairs_.size());
+    DynamicList<contactIslands::contact> cs(islandContacts_.size());
+    for (const label i : order)
+    {
+        pairs.append(islandPairs_[i]);
+        cs.append(islandContacts_[i]);
+    }
+    islandPairs_.transfer(pairs);
+    islandContacts_.transfer(cs);
 }
 
 
 void Foam::fiberInteractions::contact::applyConstraints
 (
     const PtrList<fiber>& fibers,
+    const Map<label>& localOf,
     springTable& next,
     UList<fiberIntegrator::load>& loads
 )
 {
     // The force on the lower id (Q) of each pair, -f on its partner at the
-    // same point (an image's fiber: both turned back into its frame),
-    // summed in the keys' order; the springs at the end under both keys
+    // same point (an image's fiber: both turned back into its frame; a
+    // fiber of another processor: sent there), summed in the keys' order;
+    // the springs at the end under both keys
     DynamicList<pointForce> parts;
-    forAll(islandPairs_, i)
+    List<DynamicList<scalar>> out(Pstream::nProcs());
+    for (const constraintPair& cp : islandPairs_)
     {
-        const constraintPair& cp = islandPairs_[i];
-        const contactIslands::contact& c = islands_.contactAt(i);
         const pairKey& k = cp.key;
-        const vector fQ(cp.qMoves ? c.f : -c.f);
-        const vector xi(cp.qMoves ? c.xiEnd : -c.xiEnd);
+        const vector fQ(cp.qMoves ? cp.f : -cp.f);
+        const vector xi(cp.qMoves ? cp.xiEnd : -cp.xiEnd);
         const pairKey kr{k[2], k[3], k[0], k[1]};
         next.set(k, xi);
-        next.set(kr, cp.R.T() & xi);
         if (cp.qMoves)
         {
             parts.append(pointForce{k, cp.q, k[1], fQ, cp.c});
         }
-        if (c.b >= 0 || !cp.qMoves)
+        const tensor R(turnR(cp.turn));
+        const vector fP(-(R.T() & fQ));
+        const point cP
+        (
+            cp.turn >= 0 ? periodic_[cp.turn].invTransformPosition(cp.c)
+          : cp.c
+        );
+        const vector xiP(R.T() & xi);
+        if (cp.p >= 0)
         {
-            parts.append
-            (
-                pointForce
-                {
-                    kr, cp.p, k[3], -(cp.R.T() & fQ),
-                    (cp.R.T() & cp.c) + cp.shift
-                }
-            );
+            next.set(kr, xiP);
+            if (cp.pMoves)
+            {
+                parts.append(pointForce{kr, cp.p, k[3], fP, cP});
+            }
+            continue;
         }
+        DynamicList<scalar>& o = out[cp.pProc];
+        for (const label l : kr)
+        {
+            o.append(l);
+        }
+        o.append(cp.pMoves);
+        for (const vector& v : {fP, vector(cP), xiP})
+        {
+            o.append(v.x());
+            o.append(v.y());
+            o.append(v.z());
+        }
+    }
+    if (Pstream::parRun())
+    {
+        partnerForces(localOf, out, next, parts);
     }
     std::sort
     (

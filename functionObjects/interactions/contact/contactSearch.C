@@ -35,7 +35,7 @@ using namespace Foam;
 typedef fiberInteractions::contact::segment segment;
 
 //- Scalars per segment in a processor's message (packSegment)
-const label nPacked = 57;
+const label nPacked = 59;
 
 //- Segment s into buf from position k on (labels and bools as exact
 //  scalars): one contiguous block per message, not a stream of tokens
@@ -78,6 +78,8 @@ void packSegment(const segment& s, UList<scalar>& buf, label& k)
     buf[k++] = s.wall;
     buf[k++] = s.later;
     buf[k++] = s.was;
+    buf[k++] = s.proc;
+    buf[k++] = s.turn;
 }
 
 
@@ -121,14 +123,23 @@ void unpackSegment(const UList<scalar>& buf, label& k, segment& s)
     s.wall = buf[k++];
     s.later = buf[k++] != 0;
     s.was = buf[k++] != 0;
+    s.proc = label(buf[k++]);
+    s.turn = label(buf[k++]);
     s.local = -1;
 }
 
 
-//- The segment moved by T (an image across periodic patches)
-segment image(const segment& s, const vectorTensorTransform& T)
+//- The segment moved by T, the mesh's periodic transform turn (an image
+//  across periodic patches)
+segment image
+(
+    const segment& s,
+    const vectorTensorTransform& T,
+    const label turn
+)
 {
     segment i(s);
+    i.turn = turn;
     i.a = T.transformPosition(s.a);
     i.b = T.transformPosition(s.b);
     i.x = T.transformPosition(s.x);
@@ -508,7 +519,7 @@ void Foam::fiberInteractions::contact::localSegments
                     roles[fi] == role::fixed ? 0 : f.mass(), fi,
                     l.sX, l.sTheta, l.sV, l.sW, l.sTau, l.H, l.dX, l.dTheta,
                     u, gradU, slip, fl.slack, fl.tauLo, fl.tauHi, fl.g,
-                    fl.wall, fl.later, fl.engaged
+                    fl.wall, fl.later, fl.engaged, Pstream::myProcNo(), -1
                 }
             );
             zPrev = z;
@@ -943,12 +954,13 @@ Foam::fiberInteractions::contact::unwrapped
     segment best(s);
     if (magSqr(s.a - a0) > sqr(near_.r))
     {
-        for (const vectorTensorTransform& T : periodic_)
+        forAll(periodic_, ti)
         {
+            const vectorTensorTransform& T = periodic_[ti];
             const point a(T.transformPosition(s.a));
             if (magSqr(a - a0) < magSqr(best.a - a0))
             {
-                best = image(s, T);
+                best = image(s, T, ti);
             }
         }
     }
@@ -1892,13 +1904,14 @@ void Foam::fiberInteractions::contact::addImages
     const label n = segs.size();
     for (label i = 0; i < n; ++i)
     {
-        for (const vectorTensorTransform& T : periodic_)
+        forAll(periodic_, ti)
         {
+            const vectorTensorTransform& T = periodic_[ti];
             const point a(T.transformPosition(segs[i].a));
             const point b(T.transformPosition(segs[i].b));
             if (domain.overlaps(boundBox(min(a, b), max(a, b))))
             {
-                segs.append(image(segs[i], T));
+                segs.append(image(segs[i], T, ti));
             }
         }
     }
