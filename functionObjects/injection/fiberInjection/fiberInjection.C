@@ -441,7 +441,7 @@ void regionCandidates
             j,
             makeFiber(0, c, p, sz[j], set.sizes.density(), set.index)
         );
-        const label celli = mesh.findCell(c);
+        const label celli = periodicImages::findCell(mesh, c);
         ok[j*m] = (celli >= 0 && inside[celli]);
 
         // The segments as the fiber will have them: bent for a curvature

@@ -308,12 +308,29 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
 void Foam::fiberInteractions::contact::readScheme(const dictionary& dict)
 {
     // 'scheme' explicit, implicit or constraints; 'implicit on' is
-    // 'scheme implicit' (the entry before 'scheme' was)
+    // 'scheme implicit' (the entry before 'scheme' was).  By default
+    // constraints in a liquid (the fiberTracking entry's rhoInf at least
+    // 100 kg/m3: the fluid damps collisions, and the form is cheap and
+    // exact there), explicit in a gas (fibers bounce: exact restitution)
     const bool implicitOn = dict.getOrDefault<Switch>("implicit", false);
-    const word scheme
+    const scalar rhoInf = dict.parent().getOrDefault<scalar>("rhoInf", 0);
+    const word byDefault
     (
-        dict.getOrDefault<word>("scheme", implicitOn ? "implicit" : "explicit")
+        implicitOn ? "implicit" : rhoInf >= 100 ? "constraints" : "explicit"
     );
+    const word scheme(dict.getOrDefault<word>("scheme", byDefault));
+    if (!dict.found("scheme") && !implicitOn)
+    {
+        Info<< "    Fiber contacts: scheme " << scheme << " (the default "
+            << (rhoInf >= 100 ? "in a liquid" : "in a gas") << ", rhoInf "
+            << rhoInf << " kg/m3; "
+            << (
+                   rhoInf >= 100
+                 ? "'scheme explicit' for fibers that bounce)"
+                 : "'scheme constraints' for contacts solved per island)"
+               )
+            << endl;
+    }
     if
     (
         scheme != "explicit" && scheme != "implicit"
@@ -717,8 +734,8 @@ void Foam::fiberInteractions::contact::checkCost
             << " per step for a single pair).  Lower 'stiffness' (the"
             << " intervals go with its square root: " << kMax.str().c_str()
             << " N/m gives the limit), lower 'contactSteps', or use"
-            << " 'implicit on' (intervals set by how fast pairs approach,"
-            << " not by the contact time; collisions inelastic)"
+            << " 'scheme constraints' (intervals set by how fast pairs"
+            << " approach, not by the contact time; collisions inelastic)"
             << exit(FatalIOError);
     }
 }

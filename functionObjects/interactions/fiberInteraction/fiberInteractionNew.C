@@ -25,7 +25,9 @@ Foam::autoPtr<Foam::fiberInteraction> Foam::fiberInteraction::New
     (
         dict, "interactions", "{ type contact; stiffness 0.1; ... }"
     );
-    const dictionary& iDict = dict.subOrEmptyDict("interactions");
+    // (its parent the fiberTracking entry: a model may read the fluid's
+    // rhoInf there)
+    const dictionary iDict(dict, dict.subOrEmptyDict("interactions"));
     const word modelType(iDict.getOrDefault<word>("type", "none"));
 
     Info<< "    Selecting fiber interactions " << modelType << endl;

@@ -11,6 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "periodicImages.H"
+#include "treeDataCell.H"
+#include "indexedOctree.H"
 #include "openfoamCompat.H"
 #include "fiberTracker.H"
 #include "cyclicPolyPatch.H"
@@ -167,6 +169,16 @@ Foam::List<Foam::vectorTensorTransform> Foam::periodicImages::transforms
 }
 
 
+Foam::label Foam::periodicImages::findCell
+(
+    const polyMesh& mesh,
+    const point& p
+)
+{
+    return mesh.cellTree().bb().contains(p) ? mesh.findCell(p) : -1;
+}
+
+
 bool Foam::periodicImages::inside
 (
     const polyMesh& mesh,
@@ -174,13 +186,13 @@ bool Foam::periodicImages::inside
     const point& p
 )
 {
-    if (mesh.findCell(p) >= 0)
+    if (findCell(mesh, p) >= 0)
     {
         return true;
     }
     for (const vectorTensorTransform& T : images)
     {
-        if (mesh.findCell(T.transformPosition(p)) >= 0)
+        if (findCell(mesh, T.transformPosition(p)) >= 0)
         {
             return true;
         }
