@@ -165,7 +165,7 @@ Foam::fiberCloud::fiberCloud
     wallClearance_(),
     wallClearanceIndex_(-1),
     counters_(tracker_.outletPatches(), mesh.boundaryMesh().size()),
-    interactions_(fiberInteraction::New(dict, mesh)),
+    interactions_(fiberInteraction::New(dict, mesh, rhoFluid)),
     fixedSet_(),
     setE_(),
     setG_(),

@@ -147,7 +147,8 @@ Foam::fiberInteractions::contact::maxIntervalsPerStep = 1e6;
 Foam::fiberInteractions::contact::contact
 (
     const dictionary& dict,
-    const polyMesh& mesh
+    const polyMesh& mesh,
+    const scalar rhoFluid
 )
 :
     mesh_(mesh),
@@ -186,14 +187,18 @@ Foam::fiberInteractions::contact::contact
     sweptH_(0),
     nLimited_(Zero)
 {
-    read(dict);
+    read(dict, rhoFluid);
     findPeriodic();
 }
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::fiberInteractions::contact::read(const dictionary& dict)
+void Foam::fiberInteractions::contact::read
+(
+    const dictionary& dict,
+    const scalar rhoFluid
+)
 {
     keywordCheck::warnUnknown
     (
@@ -231,7 +236,7 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
             << "Entry 'contactSteps' must be at least 1, not "
             << contactSteps_ << exit(FatalIOError);
     }
-    readScheme(dict);
+    readScheme(dict, rhoFluid);
     maxApproach_ = keywordCheck::positive(dict, "maxApproach", 0.25);
     keywordCheck::noEffect
     (
@@ -305,7 +310,11 @@ void Foam::fiberInteractions::contact::read(const dictionary& dict)
 }
 
 
-void Foam::fiberInteractions::contact::readScheme(const dictionary& dict)
+void Foam::fiberInteractions::contact::readScheme
+(
+    const dictionary& dict,
+    const scalar rhoInf
+)
 {
     // 'scheme' explicit, implicit or constraints; 'implicit on' is
     // 'scheme implicit' (the entry before 'scheme' was).  By default
@@ -313,7 +322,6 @@ void Foam::fiberInteractions::contact::readScheme(const dictionary& dict)
     // 100 kg/m3: the fluid damps collisions, and the form is cheap and
     // exact there), explicit in a gas (fibers bounce: exact restitution)
     const bool implicitOn = dict.getOrDefault<Switch>("implicit", false);
-    const scalar rhoInf = dict.parent().getOrDefault<scalar>("rhoInf", 0);
     const word byDefault
     (
         implicitOn ? "implicit" : rhoInf >= 100 ? "constraints" : "explicit"

@@ -18,16 +18,15 @@ License
 Foam::autoPtr<Foam::fiberInteraction> Foam::fiberInteraction::New
 (
     const dictionary& dict,
-    const polyMesh& mesh
+    const polyMesh& mesh,
+    const scalar rhoFluid
 )
 {
     keywordCheck::optionalSubDict
     (
         dict, "interactions", "{ type contact; stiffness 0.1; ... }"
     );
-    // (its parent the fiberTracking entry: a model may read the fluid's
-    // rhoInf there)
-    const dictionary iDict(dict, dict.subOrEmptyDict("interactions"));
+    const dictionary& iDict = dict.subOrEmptyDict("interactions");
     const word modelType(iDict.getOrDefault<word>("type", "none"));
 
     Info<< "    Selecting fiber interactions " << modelType << endl;
@@ -45,7 +44,7 @@ Foam::autoPtr<Foam::fiberInteraction> Foam::fiberInteraction::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<fiberInteraction>(cstrIter()(iDict, mesh));
+    return autoPtr<fiberInteraction>(cstrIter()(iDict, mesh, rhoFluid));
 }
 
 
