@@ -894,6 +894,14 @@ Foam::List<Foam::labelList> Foam::contactIslands::islands() const
 }
 
 
+//- The most contacts of an island solved by active sets: beyond, their
+//  sparse LU (each pass a factorization of the island's system) costs more
+//  than the sweeps (cases/fiberFlocs at N = 60, one island of thousands of
+//  contacts: over 300 s for 0.003 s of fiber time, 90 % in the LU; with
+//  the sweeps alone 13 s)
+static const Foam::label maxActiveSetContacts = 200;
+
+
 void Foam::contactIslands::solveIsland(const labelList& cs, const scalar h)
 {
     // The explicit forces first; then sweeps (cheap where they converge
@@ -920,7 +928,7 @@ void Foam::contactIslands::solveIsland(const labelList& cs, const scalar h)
     const label first = activeSets_ ? min(100, maxSweeps_) : maxSweeps_;
     label n = sweeps(bodies_, contacts_, cs, sides, W, h, tolerance_, first, f);
     stats_.iterations += mag(n);
-    if (n < 0 && activeSets_)
+    if (n < 0 && activeSets_ && m <= maxActiveSetContacts)
     {
         std::vector<vector> fa(m, Zero);
         const label passes = activeSet(contacts_, cs, W, uFree, h, fa);
