@@ -2437,6 +2437,7 @@ void testFlexibleLinks();
 void testFlexibleBuckling();
 void testFlexibleResponse();
 void testContactIslands();
+void testSegmentPairSearch();
 
 
 int main()
@@ -2479,6 +2480,7 @@ int main()
         testFlexibleBuckling();
         testFlexibleResponse();
         testContactIslands();
+        testSegmentPairSearch();
     }
     catch (const Foam::error& err)
     {
