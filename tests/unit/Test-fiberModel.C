@@ -2438,6 +2438,7 @@ void testFlexibleBuckling();
 void testFlexibleResponse();
 void testContactIslands();
 void testSegmentPairSearch();
+void testContactLaws();
 
 
 int main()
@@ -2481,6 +2482,7 @@ int main()
         testFlexibleResponse();
         testContactIslands();
         testSegmentPairSearch();
+        testContactLaws();
     }
     catch (const Foam::error& err)
     {

@@ -152,13 +152,8 @@ Foam::fiberInteractions::contact::contact
 )
 :
     mesh_(mesh),
-    kn_(0),
-    e_(1),
-    zeta_(0),
-    mu_(0),
-    ktRatio_(2.0/7.0),
+    law_(),
     contactSteps_(20),
-    cohesion_(0),
     range_(0),
     implicit_(false),
     constraints_(false),
@@ -200,35 +195,15 @@ void Foam::fiberInteractions::contact::read
     const scalar rhoFluid
 )
 {
-    keywordCheck::warnUnknown
-    (
-        dict,
-        wordList
-        ({
-            "type", "stiffness", "restitution", "friction",
-            "tangentialStiffness", "contactSteps", "cohesion", "implicit",
-            "maxApproach", "scheme"
-        }),
-        "interactions (contact)"
-    );
-    kn_ = keywordCheck::positive(dict, "stiffness");
-    e_ = dict.get<scalar>("restitution");
-    if (!(e_ > 0) || e_ > 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'restitution' must lie in (0, 1], not " << e_
-            << exit(FatalIOError);
-    }
-    const scalar lnE = std::log(e_);
-    zeta_ = -lnE/std::sqrt(sqr(constant::mathematical::pi) + sqr(lnE));
-    mu_ = dict.getOrDefault<scalar>("friction", 0);
-    if (mu_ < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'friction' must not be negative, not " << mu_
-            << exit(FatalIOError);
-    }
-    ktRatio_ = keywordCheck::positive(dict, "tangentialStiffness", 2.0/7.0);
+    law_ = fiberContactLaw::New(dict);
+    range_ = law_->range();
+    wordList known
+    ({
+        "type", "contactSteps", "implicit", "maxApproach", "scheme"
+    });
+    known.append(fiberContactLaw::commonKeywords());
+    known.append(law_->keywords());
+    keywordCheck::warnUnknown(dict, known, "interactions (contact)");
     contactSteps_ = dict.getOrDefault<label>("contactSteps", 20);
     if (contactSteps_ < 1)
     {
@@ -250,24 +225,6 @@ void Foam::fiberInteractions::contact::read
       : "with explicit contacts (implicit off: the intervals resolve the"
         " contact time, contactSteps)"
     );
-    const dictionary* cohesionDict =
-        keywordCheck::optionalSubDict
-        (
-            dict, "cohesion", "{ strength 1e-6; range 2e-6; }"
-        );
-    if (cohesionDict)
-    {
-        const dictionary& c = *cohesionDict;
-        keywordCheck::warnUnknown
-        (
-            c,
-            wordList({"strength", "range"}),
-            "interactions/cohesion"
-        );
-        cohesion_ = keywordCheck::positive(c, "strength");
-        range_ = keywordCheck::positive(c, "range");
-    }
-
     // A two-dimensional case (empty or wedge patches) holds every fiber in
     // one plane: two fibers that cross there meet axis to axis, and the
     // contact's normal (across both axes) points out of that plane
@@ -284,9 +241,8 @@ void Foam::fiberInteractions::contact::read
             << exit(FatalIOError);
     }
 
-    Info<< "    Fiber contacts: k_n " << kn_ << " N/m, restitution " << e_
-        << " (damping ratio " << zeta_ << "), friction " << mu_
-        << ", k_t/k_n " << ktRatio_;
+    Info<< "    Fiber contacts: ";
+    law_->describe(Info);
     if (constraints_)
     {
         Info<< ", constraints per island (intervals by the approach of"
@@ -302,9 +258,10 @@ void Foam::fiberInteractions::contact::read
     {
         Info<< ", " << contactSteps_ << " intervals per contact time";
     }
-    if (cohesion_ > 0)
+    if (law_->cohesionStrength() > 0)
     {
-        Info<< ", cohesion " << cohesion_ << " N within " << range_ << " m";
+        Info<< ", cohesion " << law_->cohesionStrength() << " N within "
+            << range_ << " m";
     }
     Info<< endl;
 }
@@ -400,6 +357,7 @@ Foam::vector Foam::fiberInteractions::contact::tangential
     const vector& n,
     const vector& vt,
     const scalar Fn,
+    const scalar delta,
     const scalar m,
     const pairKey& k,
     const scalar h,
@@ -422,9 +380,9 @@ Foam::vector Foam::fiberInteractions::contact::tangential
         xi *= len/lenT;
     }
     xiStart = xi;
-    const scalar kt = ktRatio_*kn_;
-    const scalar ct = 2*zeta_*std::sqrt(m*kt);
-    const scalar FtMax = mu_*mag(Fn);
+    const scalar kt = law_->tangentialStiffness(delta);
+    const scalar ct = law_->tangentialDamping(m, delta);
+    const scalar FtMax = law_->friction()*mag(Fn);
 
     if (implicit_)
     {
@@ -512,6 +470,7 @@ void Foam::fiberInteractions::contact::implicitSprings
     const vector& vB,
     const vector& n,
     const scalar m,
+    const scalar delta,
     const bool sticks,
     const scalar cSlide,
     pairLoad& p
@@ -528,13 +487,12 @@ void Foam::fiberInteractions::contact::implicitSprings
     p.vp =
         self ? vector(Zero) : free ? 0.5*(vA + vB) : (A.m > 0 ? vB : vA);
     const tensor nn(sqr(n));
-    p.K = (phi*kn_)*nn;
-    p.C = (phi*2*zeta_*std::sqrt(m*kn_))*nn;
+    p.K = (phi*law_->normalStiffness(delta))*nn;
+    p.C = (phi*law_->normalDamping(m, delta))*nn;
     if (sticks)
     {
-        const scalar kt = ktRatio_*kn_;
-        p.K += (phi*kt)*(tensor::I - nn);
-        p.C += (phi*2*zeta_*std::sqrt(m*kt))*(tensor::I - nn);
+        p.K += (phi*law_->tangentialStiffness(delta))*(tensor::I - nn);
+        p.C += (phi*law_->tangentialDamping(m, delta))*(tensor::I - nn);
     }
     else
     {
@@ -558,7 +516,11 @@ Foam::fiberInteractions::contact::geometry
     g.owns =
         ownsContact(A, r.s, r.a - r.b) && ownsContact(B, r.t, r.b - r.a);
     g.touching =
-        (g.delta > 0 || (cohesion_ > 0 && -g.delta < range_)) && g.owns;
+        (
+            g.delta > 0
+         || (law_->cohesionStrength() > 0 && -g.delta < range_)
+        )
+     && g.owns;
     g.close = g.owns && -g.delta < range_ + 0.1*min(A.d, B.d);
 
     // Normal from B to A; axes that meet: normal to both
@@ -615,32 +577,36 @@ bool Foam::fiberInteractions::contact::pairForce
     scalar Fn = 0;
     if (delta > 0)
     {
-        const scalar cn = 2*zeta_*std::sqrt(m*kn_);
-        Fn = kn_*delta - cn*vn;
+        const fiberContactLaw& law = law_();
+        const scalar cn = law.normalDamping(m, delta);
+        const scalar Fs = law.springForce(delta);
+        Fn = Fs - cn*vn;
         bool sticks = false;
         scalar cSlide = 0;
-        if (mu_ > 0)
+        if (law.friction() > 0)
         {
             p.F =
                 tangential
                 (
-                    n, vrel - vn*n, implicit_ ? kn_*delta : Fn, m, k, h,
+                    n, vrel - vn*n, implicit_ ? Fs : Fn, delta, m, k, h,
                     springs, sticks, p.xi, cSlide
                 );
             p.sticks = sticks;
             p.vt0 = mag(vrel - vn*n);
-            p.xiMax = mu_*(implicit_ ? kn_*delta : mag(Fn))/(ktRatio_*kn_);
+            p.xiMax =
+                law.friction()*(implicit_ ? Fs : mag(Fn))
+               /law.tangentialStiffness(delta);
         }
         if (implicit_)
         {
-            implicitSprings(A, B, vA, vB, n, m, sticks, cSlide, p);
-            Fn = kn_*delta;
+            implicitSprings
+            (
+                A, B, vA, vB, n, m, delta, sticks, cSlide, p
+            );
+            Fn = Fs;
         }
     }
-    if (cohesion_ > 0)
-    {
-        Fn -= delta > 0 ? cohesion_ : cohesion_*(1 + delta/range_);
-    }
+    Fn -= law_->cohesion(delta);
     p.F += Fn*n;
     return true;
 }
@@ -704,9 +670,7 @@ Foam::scalar Foam::fiberInteractions::contact::contactTime
     const scalar m
 ) const
 {
-    return
-        constant::mathematical::pi
-       /std::sqrt(kn_/m*(1 - sqr(zeta_)));
+    return law_->contactTime(m);
 }
 
 
@@ -723,17 +687,20 @@ void Foam::fiberInteractions::contact::checkCost
     }
     const scalar tc = contactTime(m/8);
     const scalar n = std::ceil(dt*contactSteps_/tc*(1 - 1e-9));
+    // (the linear law's stiffness; a law whose stiffness grows with the
+    // overlap: at touching)
+    const scalar kn = law_->normalStiffness(0);
     Info<< "    Explicit contacts: contact time " << tc << " s (lightest"
-        << " body " << m << " kg, k_n " << kn_ << " N/m): a step of " << dt
+        << " body " << m << " kg, k_n " << kn << " N/m): a step of " << dt
         << " s takes " << n << " intervals of the fibers that touch"
         << endl;
     if (n > maxIntervalsPerStep)
     {
         // The stiffness that gives the limit, to two digits
         std::ostringstream kMax;
-        kMax << std::setprecision(2) << kn_*sqr(maxIntervalsPerStep/n);
+        kMax << std::setprecision(2) << kn*sqr(maxIntervalsPerStep/n);
         FatalIOErrorInFunction(dict)
-            << "Entry 'stiffness' " << kn_ << " N/m: the contact time of"
+            << "Entry 'stiffness' " << kn << " N/m: the contact time of"
             << " the lightest pair (body of " << m << " kg) is " << tc
             << " s, and 'contactSteps' " << contactSteps_ << " intervals"
             << " per contact time make " << n << " intervals in one step"
@@ -1186,7 +1153,7 @@ void Foam::fiberInteractions::contact::settle
         const segment& Q = segs[*q];
         const segment& O = segs[*o];
 
-        if (mu_ > 0)
+        if (law_->friction() > 0)
         {
             settleFriction(k, p, Q, O);
         }

@@ -133,15 +133,13 @@ bool Foam::fiberInteractions::contact::constraintOf
     const scalar damped = delta > 0 ? 1 : 0;
     c.n = n;
     c.delta0 = delta;
-    c.kn = kn_;
-    c.cn = damped*2*zeta_*std::sqrt(m*kn_);
-    c.kt = ktRatio_*kn_;
-    c.ct = damped*2*zeta_*std::sqrt(m*c.kt);
-    c.mu = mu_;
-    c.fExtra =
-        !(cohesion_ > 0) || !touching ? vector(Zero)
-      : delta > 0 ? -cohesion_*n
-      : -cohesion_*(1 + delta/range_)*n;
+    const fiberContactLaw& law = law_();
+    c.kn = law.normalStiffness(delta);
+    c.cn = damped*law.normalDamping(m, delta);
+    c.kt = law.tangentialStiffness(delta);
+    c.ct = damped*law.tangentialDamping(m, delta);
+    c.mu = law.friction();
+    c.fExtra = touching ? vector(-law.cohesion(delta)*n) : vector(Zero);
     return true;
 }
 

@@ -422,7 +422,7 @@ Foam::scalar Foam::fiberInteractions::contact::slideLimit
     // stops: it sticks at the next)
     const pairKey kA{A.fiber, A.seg, B.fiber, B.seg};
     const pairKey kB{B.fiber, B.seg, A.fiber, A.seg};
-    const scalar FtMax = mu_*kn_*max(delta, 0);
+    const scalar FtMax = law_->friction()*law_->springForce(max(delta, 0));
     if (!(FtMax > 0) || (!sliding_.found(kA) && !sliding_.found(kB)))
     {
         return GREAT;
@@ -517,7 +517,7 @@ Foam::scalar Foam::fiberInteractions::contact::pairLimit
         hp = allowed/vn;
         why = g > 0 ? limit::approaching : limit::touching;
     }
-    if (implicit_ && g <= 0 && mu_ > 0)
+    if (implicit_ && g <= 0 && law_->friction() > 0)
     {
         const vector n((r.a - r.b)/max(dist, VSMALL));
         const scalar hs =
@@ -1211,8 +1211,8 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
             max
             (
                 kick,
-                relSpeed(A, B) + std::sqrt(kn_/m)*max(delta, 0)
-              + std::sqrt(2*cohesion_*range_/m)
+                relSpeed(A, B) + law_->releaseSpeed(m, delta)
+              + std::sqrt(2*law_->cohesionStrength()*range_/m)
             );
     }
     reduce(kick, maxOp<scalar>());
