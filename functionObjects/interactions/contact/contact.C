@@ -166,9 +166,7 @@ Foam::fiberInteractions::contact::contact
     warnedFlexible_(false),
     skinNext_(-1),
     periodic_(),
-    springs_(),
-    records_(),
-    pending_(),
+    rec_(),
     pairs_(),
     touching_(),
     nCollisions_(0),
@@ -330,8 +328,8 @@ Foam::vector Foam::fiberInteractions::contact::previousSpring
     // The contact's own, or one that moved to it from a neighbouring
     // segment of either fiber (across a joint)
     from = k;
-    const auto it = springs_.cfind(k);
-    if (it.found() || springs_.empty())
+    const auto it = rec_.springs().cfind(k);
+    if (it.found() || rec_.springs().empty())
     {
         return it.found() ? *it : vector(Zero);
     }
@@ -340,7 +338,7 @@ Foam::vector Foam::fiberInteractions::contact::previousSpring
         for (label b = -1; b <= 1; ++b)
         {
             const pairKey n{k[0], k[1] + a, k[2], k[3] + b};
-            const auto jt = springs_.cfind(n);
+            const auto jt = rec_.springs().cfind(n);
             if (jt.found())
             {
                 from = n;
@@ -395,9 +393,9 @@ Foam::vector Foam::fiberInteractions::contact::tangential
         // could stop it within this one, Coulomb's force as an implicit
         // dashpot, F = -mu F_n v_t/max(|v_t|, mu F_n h/m) at the present
         // speed (no overshoot as the sliding stops)
-        const label mode = sliding_.lookup(from, 0);
+        const label mode = rec_.sliding().lookup(from, 0);
         const bool slid =
-            mode > 0 || (!springs_.found(from) && kt*mag(vt)*h > FtMax);
+            mode > 0 || (!rec_.springs().found(from) && kt*mag(vt)*h > FtMax);
         sticks = !slid;
         cSlide = 0;
         if (sticks)
@@ -631,7 +629,7 @@ void Foam::fiberInteractions::contact::count
         closeNow.insert(c);
     }
     HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> next;
-    for (const FixedList<label, 2>& k : recent_)
+    for (const FixedList<label, 2>& k : rec_.recent())
     {
         if (closeNow.found(k))
         {
@@ -652,13 +650,13 @@ void Foam::fiberInteractions::contact::count
         if (t[0] < t[1])
         {
             pairs_.append(t);
-            if (!recent_.found(t))
+            if (!rec_.recent().found(t))
             {
                 ++nNew;
             }
         }
     }
-    recent_.transfer(next);
+    rec_.recent().transfer(next);
     nCollisions_ += returnReduce(nNew, sumOp<label>());
 }
 
@@ -852,7 +850,7 @@ void Foam::fiberInteractions::contact::payBack
     UList<fiberIntegrator::load>& loads
 )
 {
-    if (pending_.empty() || !(h > 0))
+    if (rec_.pending().empty() || !(h > 0))
     {
         return;
     }
@@ -866,7 +864,7 @@ void Foam::fiberInteractions::contact::payBack
         const tensor R(f.R());
         for (label i = -1; i < (f.flexible() ? f.nSegments() : 0); ++i)
         {
-            const auto it = pending_.cfind(FixedList<label, 2>{f.id(), i});
+            const auto it = rec_.pending().cfind(FixedList<label, 2>{f.id(), i});
             if (!it.found())
             {
                 continue;
@@ -889,7 +887,7 @@ void Foam::fiberInteractions::contact::payBack
                 s.F += F;
                 s.M += (c ^ F) + (*it)[1]/h;
             }
-            pending_.erase(FixedList<label, 2>{f.id(), i});
+            rec_.pending().erase(FixedList<label, 2>{f.id(), i});
         }
     }
 }
@@ -939,14 +937,14 @@ void Foam::fiberInteractions::contact::interact
     DynamicList<FixedList<label, 2>> cand;
     pairsInReach(fibers, roles, segs, cand);
 
-    springTable next(2*springs_.size() + 16);
+    springTable next(2*rec_.springs().size() + 16);
     DynamicList<FixedList<label, 2>> touching;
     DynamicList<FixedList<label, 2>> close;
-    records_.clear();
+    rec_.records().clear();
     if (constraints_)
     {
         constrain(fibers, segs, cand, h, next, loads, touching, close);
-        springs_.transfer(next);
+        rec_.springs().transfer(next);
         count(touching, close);
         segs.clear();
         cand.clear();
@@ -995,7 +993,7 @@ void Foam::fiberInteractions::contact::interact
             );
             if (implicit_ && magSqr(pl.K) > 0)
             {
-                records_.set
+                rec_.records().set
                 (
                     k,
                     pairRecord
@@ -1009,15 +1007,15 @@ void Foam::fiberInteractions::contact::interact
     }
     applyLoads(fibers, parts, loads);
     payBack(fibers, roles, h, loads);
-    springs_.transfer(next);
-    if (sliding_.size())
+    rec_.springs().transfer(next);
+    if (rec_.sliding().size())
     {
         // Contacts that ended
-        for (const pairKey& k : sliding_.toc())
+        for (const pairKey& k : rec_.sliding().toc())
         {
-            if (!springs_.found(k))
+            if (!rec_.springs().found(k))
             {
-                sliding_.erase(k);
+                rec_.sliding().erase(k);
             }
         }
     }
@@ -1076,9 +1074,9 @@ void Foam::fiberInteractions::contact::settleFriction
         if (mag(xi) > p.xiMax)
         {
             xi *= p.xiMax/mag(xi);
-            sliding_.set(k, 1);
+            rec_.sliding().set(k, 1);
         }
-        springs_.set(k, xi);
+        rec_.springs().set(k, xi);
         return;
     }
     const vector v
@@ -1088,12 +1086,12 @@ void Foam::fiberInteractions::contact::settleFriction
     const vector vt(v - (v & p.n)*p.n);
     if ((vt & p.xi) > 0)
     {
-        springs_.set(k, (p.xiMax/mag(vt))*vt);
-        sliding_.set(k, mag(vt) < p.vt0 ? 2 : 1);
+        rec_.springs().set(k, (p.xiMax/mag(vt))*vt);
+        rec_.sliding().set(k, mag(vt) < p.vt0 ? 2 : 1);
     }
     else
     {
-        sliding_.erase(k);
+        rec_.sliding().erase(k);
     }
 }
 
@@ -1118,8 +1116,8 @@ void Foam::fiberInteractions::contact::settle
     // fixed ones (each moving side of a pair has its record, a fixed one
     // none: so a partner on another processor is there too, within reach
     // of this one's fibers that take part)
-    labelHashSet inContact(2*records_.size() + 16);
-    forAllConstIters(records_, iter)
+    labelHashSet inContact(2*rec_.records().size() + 16);
+    forAllConstIters(rec_.records(), iter)
     {
         inContact.insert(iter.key()[0]);
         inContact.insert(iter.key()[2]);
@@ -1141,7 +1139,7 @@ void Foam::fiberInteractions::contact::settle
     {
         where.insert(FixedList<label, 2>{segs[i].fiber, segs[i].seg}, i);
     }
-    for (const pairKey& k : records_.sortedToc())
+    for (const pairKey& k : rec_.records().sortedToc())
     {
         const auto q = where.cfind(FixedList<label, 2>{k[0], k[1]});
         const auto o = where.cfind(FixedList<label, 2>{k[2], k[3]});
@@ -1149,7 +1147,7 @@ void Foam::fiberInteractions::contact::settle
         {
             continue;
         }
-        const pairRecord& p = records_[k];
+        const pairRecord& p = rec_.records()[k];
         const segment& Q = segs[*q];
         const segment& O = segs[*o];
 
@@ -1169,11 +1167,11 @@ void Foam::fiberInteractions::contact::settle
         const vector JO(impulse(p, -p.F, p.rOther, O));
         const vector J(-0.5*(firstSide(k) ? JQ + JO : JO + JQ));
         const FixedList<label, 2> to{k[0], Q.flexible ? k[1] : -1};
-        if (!pending_.found(to))
+        if (!rec_.pending().found(to))
         {
-            pending_.insert(to, FixedList<vector, 2>(vector::zero));
+            rec_.pending().insert(to, FixedList<vector, 2>(vector::zero));
         }
-        FixedList<vector, 2>& back = pending_[to];
+        FixedList<vector, 2>& back = rec_.pending()[to];
         back[0] += J;
 
         // Its moment, save the component about the body's axis of least
@@ -1193,7 +1191,7 @@ void Foam::fiberInteractions::contact::settle
         const vector MJ(p.rThis ^ J);
         back[1] += MJ - e*(e & MJ);
     }
-    records_.clear();
+    rec_.records().clear();
 }
 
 
@@ -1204,155 +1202,35 @@ void Foam::fiberInteractions::contact::writeFiber
 ) const
 {
     // The fiber's tangential springs and (implicit) its contacts of the
-    // interval; nothing is pending within an interval
-    label n = 0;
-    forAllConstIters(springs_, iter)
-    {
-        n += (iter.key()[0] == id);
-    }
-    os << n;
-    forAllConstIters(springs_, iter)
-    {
-        if (iter.key()[0] == id)
-        {
-            os  << token::SPACE << iter.key() << token::SPACE << iter.val()
-                << token::SPACE << sliding_.lookup(iter.key(), 0);
-        }
-    }
-    n = 0;
-    forAllConstIters(records_, iter)
-    {
-        n += (iter.key()[0] == id);
-    }
-    os << token::SPACE << n;
-    forAllConstIters(records_, iter)
-    {
-        if (iter.key()[0] == id)
-        {
-            const pairRecord& p = iter.val();
-            os  << token::SPACE << iter.key() << token::SPACE << p.F
-                << token::SPACE << p.K << token::SPACE << p.C
-                << token::SPACE << p.vp << token::SPACE << p.rThis
-                << token::SPACE << p.rOther << token::SPACE << p.n
-                << token::SPACE << p.sticks << token::SPACE << p.xi
-                << token::SPACE << p.xiMax << token::SPACE << p.vt0;
-        }
-    }
-    n = 0;
-    for (const FixedList<label, 2>& k : recent_)
-    {
-        n += (k[0] == id);
-    }
-    os << token::SPACE << n;
-    for (const FixedList<label, 2>& k : recent_)
-    {
-        if (k[0] == id)
-        {
-            os << token::SPACE << k;
-        }
-    }
-}
-
-
-void Foam::fiberInteractions::contact::readSpring(Istream& is)
-{
-    pairKey k;
-    vector xi;
-    label mode;
-    is >> k >> xi >> mode;
-    springs_.set(k, xi);
-    if (mode > 0)
-    {
-        sliding_.set(k, mode);
-    }
+    // interval (nothing is pending within an interval), its recent pairs
+    rec_.writeFiber(id, os);
 }
 
 
 void Foam::fiberInteractions::contact::readFiber(Istream& is)
 {
-    const label n = readLabel(is);
-    for (label i = 0; i < n; ++i)
-    {
-        readSpring(is);
-    }
-    const label nRec = readLabel(is);
-    for (label i = 0; i < nRec; ++i)
-    {
-        pairKey k;
-        pairRecord p;
-        is  >> k >> p.F >> p.K >> p.C >> p.vp >> p.rThis >> p.rOther >> p.n
-            >> p.sticks >> p.xi >> p.xiMax
-            >> p.vt0;
-        records_.set(k, p);
-    }
-    const label nRecent = readLabel(is);
-    for (label i = 0; i < nRecent; ++i)
-    {
-        FixedList<label, 2> k;
-        is >> k;
-        recent_.insert(k);
-    }
+    rec_.readFiber(is);
 }
 
 
 void Foam::fiberInteractions::contact::writeRestart(Ostream& os) const
 {
     // Between steps: the springs, and the impulses to pay back (implicit)
-    os << nl << "contactSprings " << springs_.size();
-    forAllConstIters(springs_, iter)
-    {
-        os  << nl << iter.key() << token::SPACE << iter.val()
-            << token::SPACE << sliding_.lookup(iter.key(), 0);
-    }
-    os << nl << "contactPending " << pending_.size();
-    forAllConstIters(pending_, iter)
-    {
-        os  << nl << iter.key() << token::SPACE << iter.val()[0]
-            << token::SPACE << iter.val()[1];
-    }
+    rec_.writeSprings(os);
+    rec_.writePending(os);
     os  << nl << "contactInterval " << hLast_ << token::SPACE << skinNext_
         << token::SPACE << windowSkin_;
-    os  << nl << "contactRecent " << recent_.size();
-    for (const FixedList<label, 2>& k : recent_.sortedToc())
-    {
-        os  << nl << k;
-    }
+    rec_.writeRecent(os);
 }
 
 
 void Foam::fiberInteractions::contact::readRestart(Istream& is)
 {
-    // A file written without contacts has none
-    token t(is);
-    if (!t.isWord() || t.wordToken() != "contactSprings")
+    // A file written without contacts has none; each part after the
+    // springs only where the file has it (older files: not)
+    if (!rec_.readSprings(is) || !rec_.readPending(is))
     {
-        if (t.good())
-        {
-            is.putBack(t);
-        }
         return;
-    }
-    const label n = readLabel(is);
-    for (label i = 0; i < n; ++i)
-    {
-        readSpring(is);
-    }
-    token p(is);
-    if (!p.isWord() || p.wordToken() != "contactPending")
-    {
-        if (p.good())
-        {
-            is.putBack(p);
-        }
-        return;
-    }
-    const label nP = readLabel(is);
-    for (label i = 0; i < nP; ++i)
-    {
-        FixedList<label, 2> to;
-        FixedList<vector, 2> J;
-        is >> to >> J[0] >> J[1];
-        pending_.set(to, J);
     }
     token h(is);
     if (h.isWord() && h.wordToken() == "contactInterval")
@@ -1385,24 +1263,7 @@ void Foam::fiberInteractions::contact::readRestart(Istream& is)
     {
         is.putBack(h);
     }
-
-    // The pairs that touched and have not been apart since (written since
-    // collisions are counted on them; older files: none)
-    token r(is);
-    if (r.isWord() && r.wordToken() == "contactRecent")
-    {
-        const label nR = readLabel(is);
-        for (label i = 0; i < nR; ++i)
-        {
-            FixedList<label, 2> k;
-            is >> k;
-            recent_.insert(k);
-        }
-    }
-    else if (r.good())
-    {
-        is.putBack(r);
-    }
+    rec_.readRecent(is);
 }
 
 

@@ -423,7 +423,7 @@ Foam::scalar Foam::fiberInteractions::contact::slideLimit
     const pairKey kA{A.fiber, A.seg, B.fiber, B.seg};
     const pairKey kB{B.fiber, B.seg, A.fiber, A.seg};
     const scalar FtMax = law_->friction()*law_->springForce(max(delta, 0));
-    if (!(FtMax > 0) || (!sliding_.found(kA) && !sliding_.found(kB)))
+    if (!(FtMax > 0) || (!rec_.sliding().found(kA) && !rec_.sliding().found(kB)))
     {
         return GREAT;
     }
@@ -1048,12 +1048,12 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
             present.insert(fibers[fi].id(), fi);
         }
     }
-    for (const FixedList<label, 2>& k : pending_.toc())
+    for (const FixedList<label, 2>& k : rec_.pending().toc())
     {
         const auto it = present.cfind(k[0]);
         if (!it.found())
         {
-            pending_.erase(k);
+            rec_.pending().erase(k);
         }
         else
         {
