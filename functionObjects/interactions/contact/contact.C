@@ -864,7 +864,8 @@ void Foam::fiberInteractions::contact::payBack
         const tensor R(f.R());
         for (label i = -1; i < (f.flexible() ? f.nSegments() : 0); ++i)
         {
-            const auto it = rec_.pending().cfind(FixedList<label, 2>{f.id(), i});
+            const auto it =
+                rec_.pending().cfind(FixedList<label, 2>{f.id(), i});
             if (!it.found())
             {
                 continue;

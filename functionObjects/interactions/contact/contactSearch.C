@@ -423,7 +423,8 @@ Foam::scalar Foam::fiberInteractions::contact::slideLimit
     const pairKey kA{A.fiber, A.seg, B.fiber, B.seg};
     const pairKey kB{B.fiber, B.seg, A.fiber, A.seg};
     const scalar FtMax = law_->friction()*law_->springForce(max(delta, 0));
-    if (!(FtMax > 0) || (!rec_.sliding().found(kA) && !rec_.sliding().found(kB)))
+    const contactRecords::slidingTable& sliding = rec_.sliding();
+    if (!(FtMax > 0) || (!sliding.found(kA) && !sliding.found(kB)))
     {
         return GREAT;
     }
