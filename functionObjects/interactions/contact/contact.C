@@ -157,10 +157,7 @@ Foam::fiberInteractions::contact::contact
     range_(0),
     implicit_(false),
     constraints_(false),
-    islands_(),
-    bodyOf_(),
-    islandPairs_(),
-    warnedUnsettled_(false),
+    constraintSolver_(*this),
     maxApproach_(0.25),
     hLast_(0),
     warnedFlexible_(false),
@@ -175,7 +172,6 @@ Foam::fiberInteractions::contact::contact
     tcWindow_(-1),
     nMissed_(0),
     nJumped_(0),
-    nAcross_(0),
     sweptEnd_(-GREAT),
     sweptH_(0),
     nLimited_(Zero)
@@ -944,7 +940,10 @@ void Foam::fiberInteractions::contact::interact
     rec_.records().clear();
     if (constraints_)
     {
-        constrain(fibers, segs, cand, h, next, loads, touching, close);
+        constraintSolver_.constrain
+        (
+            fibers, segs, cand, h, next, loads, touching, close
+        );
         rec_.springs().transfer(next);
         count(touching, close);
         segs.clear();

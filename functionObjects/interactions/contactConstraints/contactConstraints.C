@@ -19,9 +19,31 @@ Description
 
 #include <algorithm>
 
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fiberInteractions::contactConstraints::contactConstraints
+(
+    const contact& model
+)
+:
+    model_(model),
+    islands_(),
+    bodyOf_(),
+    bodyFiber_(),
+    bodyLocal_(),
+    remoteBody_(),
+    islandPairs_(),
+    islandContacts_(),
+    shipped_(),
+    answers_(),
+    warnedUnsettled_(false),
+    nAcross_(0)
+{}
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-Foam::label Foam::fiberInteractions::contact::islandBody
+Foam::label Foam::fiberInteractions::contactConstraints::islandBody
 (
     const fiber& f,
     const label local
@@ -40,11 +62,11 @@ Foam::label Foam::fiberInteractions::contact::islandBody
 }
 
 
-void Foam::fiberInteractions::contact::respond(const scalar h)
+void Foam::fiberInteractions::contactConstraints::respond(const scalar h)
 {
     // Every body of this processor's fibers: its response over h (all
     // processors together: a segment on another's part is sampled there)
-    if (!response_)
+    if (!model_.response_)
     {
         FatalErrorInFunction
             << "Entry 'scheme constraints' of 'interactions': no cloud to"
@@ -62,7 +84,7 @@ void Foam::fiberInteractions::contact::respond(const scalar h)
     }
     List<scalarList> M;
     List<scalarList> v;
-    response_(fis, h, M, v);
+    model_.response_(fis, h, M, v);
     forAll(bs, k)
     {
         contactIslands::body& B = islands_.bodyAt(bs[k]);
@@ -72,7 +94,10 @@ void Foam::fiberInteractions::contact::respond(const scalar h)
 }
 
 
-Foam::label Foam::fiberInteractions::contact::remoteBody(const segment& S)
+Foam::label Foam::fiberInteractions::contactConstraints::remoteBody
+(
+    const segment& S
+)
 {
     const auto it = remoteBody_.cfind(S.fiber);
     if (it.found())
@@ -87,16 +112,19 @@ Foam::label Foam::fiberInteractions::contact::remoteBody(const segment& S)
 }
 
 
-Foam::tensor Foam::fiberInteractions::contact::turnR(const label turn) const
+Foam::tensor Foam::fiberInteractions::contactConstraints::turnR
+(
+    const label turn
+) const
 {
     return
-        turn >= 0 && periodic_[turn].hasR()
-      ? periodic_[turn].R()
+        turn >= 0 && model_.periodic_[turn].hasR()
+      ? model_.periodic_[turn].R()
       : tensor::I;
 }
 
 
-bool Foam::fiberInteractions::contact::constraintOf
+bool Foam::fiberInteractions::contactConstraints::constraintOf
 (
     const segment& A,
     const segment& B,
@@ -108,7 +136,7 @@ bool Foam::fiberInteractions::contact::constraintOf
 )
 {
     // The pair from the lower fiber id (A), as pairForce sees it
-    const pairGeometry g(geometry(A, B));
+    const contact::pairGeometry g(model_.geometry(A, B));
     const scalar delta = g.delta;
     const bool owns = g.owns;
     const vector& n = g.n;
@@ -133,7 +161,7 @@ bool Foam::fiberInteractions::contact::constraintOf
     const scalar damped = delta > 0 ? 1 : 0;
     c.n = n;
     c.delta0 = delta;
-    const fiberContactLaw& law = law_();
+    const fiberContactLaw& law = model_.law_();
     c.kn = law.normalStiffness(delta);
     c.cn = damped*law.normalDamping(m, delta);
     c.kt = law.tangentialStiffness(delta);
@@ -144,7 +172,7 @@ bool Foam::fiberInteractions::contact::constraintOf
 }
 
 
-void Foam::fiberInteractions::contact::constrain
+void Foam::fiberInteractions::contactConstraints::constrain
 (
     const PtrList<fiber>& fibers,
     const UList<segment>& segs,
@@ -221,7 +249,7 @@ void Foam::fiberInteractions::contact::constrain
 }
 
 
-void Foam::fiberInteractions::contact::decidePair
+void Foam::fiberInteractions::contactConstraints::decidePair
 (
     const PtrList<fiber>& fibers,
     const Map<label>& localOf,
@@ -283,7 +311,7 @@ void Foam::fiberInteractions::contact::decidePair
 }
 
 
-void Foam::fiberInteractions::contact::addConstraint
+void Foam::fiberInteractions::contactConstraints::addConstraint
 (
     const PtrList<fiber>& fibers,
     const segment& Q,
@@ -298,7 +326,7 @@ void Foam::fiberInteractions::contact::addConstraint
     // The tangential spring of the pair (the lower id's), turned into the
     // contact plane with its length kept
     pairKey from(k);
-    vector xi(previousSpring(k, from));
+    vector xi(model_.previousSpring(k, from));
     const scalar len = mag(xi);
     xi -= (xi & c.n)*c.n;
     if (mag(xi) > 0)
@@ -346,7 +374,7 @@ void Foam::fiberInteractions::contact::addConstraint
 }
 
 
-void Foam::fiberInteractions::contact::sortPending()
+void Foam::fiberInteractions::contactConstraints::sortPending()
 {
     labelList order(identity(islandPairs_.size()));
     std::sort
@@ -369,7 +397,7 @@ void Foam::fiberInteractions::contact::sortPending()
 }
 
 
-void Foam::fiberInteractions::contact::applyConstraints
+void Foam::fiberInteractions::contactConstraints::applyConstraints
 (
     const PtrList<fiber>& fibers,
     const Map<label>& localOf,
@@ -398,7 +426,7 @@ void Foam::fiberInteractions::contact::applyConstraints
         const vector fP(-(R.T() & fQ));
         const point cP
         (
-            cp.turn >= 0 ? periodic_[cp.turn].invTransformPosition(cp.c)
+            cp.turn >= 0 ? model_.periodic_[cp.turn].invTransformPosition(cp.c)
           : cp.c
         );
         const vector xiP(R.T() & xi);
@@ -445,6 +473,12 @@ void Foam::fiberInteractions::contact::applyConstraints
         loads[p.local].addForce(fibers[p.local], p.seg, p.F, p.c);
         loads[p.local].implicit = true;
     }
+}
+
+
+Foam::label Foam::fiberInteractions::contactConstraints::pairsAcross() const
+{
+    return returnReduce(nAcross_, sumOp<label>());
 }
 
 

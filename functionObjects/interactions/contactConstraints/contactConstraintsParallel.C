@@ -175,7 +175,7 @@ label rootOf(labelList& up, label i)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
-void Foam::fiberInteractions::contact::tellPartners
+void Foam::fiberInteractions::contactConstraints::tellPartners
 (
     const PtrList<fiber>& fibers,
     const Map<label>& localOf,
@@ -231,7 +231,10 @@ void Foam::fiberInteractions::contact::tellPartners
 }
 
 
-void Foam::fiberInteractions::contact::shipIslands(const labelHashSet& told)
+void Foam::fiberInteractions::contactConstraints::shipIslands
+(
+    const labelHashSet& told
+)
 {
     // The islands of this processor's pending contacts; those with a body
     // of another's fiber, or one of this processor's told of, reach
@@ -302,7 +305,7 @@ void Foam::fiberInteractions::contact::shipIslands(const labelHashSet& told)
 }
 
 
-void Foam::fiberInteractions::contact::receiveBodies
+void Foam::fiberInteractions::contactConstraints::receiveBodies
 (
     const UList<scalar>& in,
     Map<label>& byId
@@ -330,7 +333,10 @@ void Foam::fiberInteractions::contact::receiveBodies
 }
 
 
-void Foam::fiberInteractions::contact::receiveIslands(PstreamBuffers& pBufs)
+void Foam::fiberInteractions::contactConstraints::receiveIslands
+(
+    PstreamBuffers& pBufs
+)
 {
     // The bodies first (standing-in ones filled, new ones added), then
     // every contact, the master's and the received, in the keys' order
@@ -404,7 +410,7 @@ void Foam::fiberInteractions::contact::receiveIslands(PstreamBuffers& pBufs)
 }
 
 
-void Foam::fiberInteractions::contact::collectResults()
+void Foam::fiberInteractions::contactConstraints::collectResults()
 {
     for (constraintPair& cp : islandPairs_)
     {
@@ -452,7 +458,7 @@ void Foam::fiberInteractions::contact::collectResults()
 }
 
 
-void Foam::fiberInteractions::contact::partnerForces
+void Foam::fiberInteractions::contactConstraints::partnerForces
 (
     const Map<label>& localOf,
     const UList<DynamicList<scalar>>& out,
