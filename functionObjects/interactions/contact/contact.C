@@ -41,22 +41,8 @@ namespace
 
 using namespace Foam;
 
-//- A pair's load on this side's fiber (explicit force, the contact point
-//  and its lever from the fiber's centre, implicit spring, dashpot and
-//  predicted velocity), with the pair's key (this side's fiber and
-//  segment, the other's) for a fixed order
-struct contribution
-{
-    fiberInteractions::contact::pairKey key;
-    label local;
-    vector F;
-    point c;
-    vector r;
-    vector rOther;
-    tensor K;
-    tensor C;
-    vector vp;
-};
+//- A pair's load on this side's fiber (contact::contribution)
+typedef fiberInteractions::contact::contribution contribution;
 
 
 //- The contributions added to the loads
@@ -167,8 +153,7 @@ Foam::fiberInteractions::contact::contact
     pairs_(),
     touching_(),
     nCollisions_(0),
-    denseFraction_(0),
-    windowSkin_(0.5),
+    windows_(*this),
     tcWindow_(-1),
     nMissed_(0),
     nJumped_(0),
@@ -729,6 +714,90 @@ Foam::scalar Foam::fiberInteractions::contact::shortestContactTime
 }
 
 
+void Foam::fiberInteractions::contact::warnFlexible
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles
+)
+{
+    if (!implicit_ || constraints_ || warnedFlexible_)
+    {
+        return;
+    }
+    bool flexible = false;
+    forAll(fibers, fi)
+    {
+        flexible =
+            flexible
+         || (fibers[fi].flexible() && roles[fi] == role::free);
+    }
+    if (returnReduce(flexible, orOp<bool>()))
+    {
+        warnedFlexible_ = true;
+        WarningInFunction
+            << "Implicit contacts with flexible fibers: contacts"
+            << " between two flexible fibers have a known defect (the"
+            << " two sides' impulses need not cancel, and what is paid"
+            << " back can build up and kick the chains; docs/model.md,"
+            << " section 7).  Use implicit off where flexible fibers"
+            << " touch each other and their impulses matter." << endl;
+    }
+}
+
+
+Foam::scalar Foam::fiberInteractions::contact::approachInterval
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    const scalar tc,
+    const scalar tLeft,
+    scalar& vFar
+)
+{
+    label why = -1;
+    // Pairs within reach and a skin: how fast they close (adaptive:
+    // every interval), growing at most twofold from one interval to
+    // the next, from the contact time at the start (kept for the
+    // interval's interact, at the same time).  The skin: three times
+    // what the far pairs could close in the last interval (the next
+    // may be twice as long), within a twentieth and a half of the
+    // reach; half the reach at the start.  Where it is thin the search
+    // and the interval limit test fewer pairs; the interval never
+    // lets a far pair close more than the skin
+    DynamicList<segment>& segs = near_.segs;
+    DynamicList<FixedList<label, 2>>& cand = near_.cand;
+    segs.clear();
+    cand.clear();
+    near_.inReach.clear();
+    near_.lambda = 0;
+    const scalar r0 = reach(fibers, roles);
+    near_.skin =
+        skinNext_ < 0 ? 0.5*r0 : min(max(skinNext_, 0.05*r0), 0.5*r0);
+    near_.r = gather(fibers, roles, segs, nullptr, near_.skin);
+    candidates
+    (
+        segs, near_.r, cand, near_.skin, &near_.inReach, &near_.lambda
+    );
+    near_.valid = true;
+    const scalar hMax =
+        approachLimit
+        (
+            segs, cand, near_.lambda, near_.r, near_.skin,
+            min(hLast_ > 0 ? 2*hLast_ : tc, tLeft), vFar, why
+        );
+    if (why < 0)
+    {
+        const scalar cap = hLast_ > 0 ? 2*hLast_ : tc;
+        why =
+            tLeft <= cap ? limit::stepEnd
+          : hLast_ > 0 ? limit::growth
+          : limit::first;
+    }
+    ++nLimited_[why];
+    return hMax;
+}
+
+
 Foam::scalar Foam::fiberInteractions::contact::nextInterval
 (
     const PtrList<fiber>& fibers,
@@ -749,70 +818,11 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
     // The longest interval allowed; the rest of the step is split into
     // equal parts no longer than that
     scalar hMax = GREAT;
-    if (implicit_ && !constraints_ && !warnedFlexible_)
-    {
-        bool flexible = false;
-        forAll(fibers, fi)
-        {
-            flexible =
-                flexible
-             || (fibers[fi].flexible() && roles[fi] == role::free);
-        }
-        if (returnReduce(flexible, orOp<bool>()))
-        {
-            warnedFlexible_ = true;
-            WarningInFunction
-                << "Implicit contacts with flexible fibers: contacts"
-                << " between two flexible fibers have a known defect (the"
-                << " two sides' impulses need not cancel, and what is paid"
-                << " back can build up and kick the chains; docs/model.md,"
-                << " section 7).  Use implicit off where flexible fibers"
-                << " touch each other and their impulses matter." << endl;
-        }
-    }
+    warnFlexible(fibers, roles);
     scalar vFar = 0;
-    label why = -1;
     if (implicit_)
     {
-        // Pairs within reach and a skin: how fast they close (adaptive:
-        // every interval), growing at most twofold from one interval to
-        // the next, from the contact time at the start (kept for the
-        // interval's interact, at the same time).  The skin: three times
-        // what the far pairs could close in the last interval (the next
-        // may be twice as long), within a twentieth and a half of the
-        // reach; half the reach at the start.  Where it is thin the search
-        // and the interval limit test fewer pairs; the interval never
-        // lets a far pair close more than the skin
-        DynamicList<segment>& segs = near_.segs;
-        DynamicList<FixedList<label, 2>>& cand = near_.cand;
-        segs.clear();
-        cand.clear();
-        near_.inReach.clear();
-        near_.lambda = 0;
-        const scalar r0 = reach(fibers, roles);
-        near_.skin =
-            skinNext_ < 0 ? 0.5*r0 : min(max(skinNext_, 0.05*r0), 0.5*r0);
-        near_.r = gather(fibers, roles, segs, nullptr, near_.skin);
-        candidates
-        (
-            segs, near_.r, cand, near_.skin, &near_.inReach, &near_.lambda
-        );
-        near_.valid = true;
-        hMax =
-            approachLimit
-            (
-                segs, cand, near_.lambda, near_.r, near_.skin,
-                min(hLast_ > 0 ? 2*hLast_ : tc, tLeft), vFar, why
-            );
-        if (why < 0)
-        {
-            const scalar cap = hLast_ > 0 ? 2*hLast_ : tc;
-            why =
-                tLeft <= cap ? limit::stepEnd
-              : hLast_ > 0 ? limit::growth
-              : limit::first;
-        }
-        ++nLimited_[why];
+        hMax = approachInterval(fibers, roles, tc, tLeft, vFar);
     }
     else if (tc < GREAT)
     {
@@ -912,49 +922,17 @@ void Foam::fiberInteractions::contact::pairsInReach
 }
 
 
-void Foam::fiberInteractions::contact::interact
+void Foam::fiberInteractions::contact::springLoads
 (
-    const PtrList<fiber>& fibers,
-    const UList<role>& roles,
-    const scalar t,
+    const UList<segment>& segs,
+    const UList<FixedList<label, 2>>& cand,
     const scalar h,
-    UList<fiberIntegrator::load>& loads
+    springTable& next,
+    DynamicList<contribution>& parts,
+    DynamicList<FixedList<label, 2>>& touching,
+    DynamicList<FixedList<label, 2>>& close
 )
 {
-    hLast_ = h;
-    if (near_.valid)
-    {
-        missedGrazes(t, h, near_.segs, near_.cand);
-    }
-    else
-    {
-        sweptCand_.clear();
-    }
-    DynamicList<segment> segs;
-    DynamicList<FixedList<label, 2>> cand;
-    pairsInReach(fibers, roles, segs, cand);
-
-    springTable next(2*rec_.springs().size() + 16);
-    DynamicList<FixedList<label, 2>> touching;
-    DynamicList<FixedList<label, 2>> close;
-    rec_.records().clear();
-    if (constraints_)
-    {
-        constraintSolver_.constrain
-        (
-            fibers, segs, cand, h, next, loads, touching, close
-        );
-        rec_.springs().transfer(next);
-        count(touching, close);
-        segs.clear();
-        cand.clear();
-        near_.segs.transfer(segs);
-        near_.inReach.transfer(cand);
-        return;
-    }
-
-    // The loads on this processor's fibers, by pair
-    DynamicList<contribution> parts;
     for (const FixedList<label, 2>& ij : cand)
     {
         const segment& Q = segs[ij[0]];
@@ -1005,6 +983,54 @@ void Foam::fiberInteractions::contact::interact
             }
         }
     }
+}
+
+
+void Foam::fiberInteractions::contact::interact
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    const scalar t,
+    const scalar h,
+    UList<fiberIntegrator::load>& loads
+)
+{
+    hLast_ = h;
+    if (near_.valid)
+    {
+        missedGrazes(t, h, near_.segs, near_.cand);
+    }
+    else
+    {
+        sweptCand_.clear();
+    }
+    DynamicList<segment> segs;
+    DynamicList<FixedList<label, 2>> cand;
+    pairsInReach(fibers, roles, segs, cand);
+
+    springTable next(2*rec_.springs().size() + 16);
+    DynamicList<FixedList<label, 2>> touching;
+    DynamicList<FixedList<label, 2>> close;
+    rec_.records().clear();
+    if (constraints_)
+    {
+        constraintSolver_.constrain
+        (
+            fibers, segs, cand, h, next, loads, touching, close
+        );
+        rec_.springs().transfer(next);
+        count(touching, close);
+        segs.clear();
+        cand.clear();
+        near_.segs.transfer(segs);
+        near_.inReach.transfer(cand);
+        return;
+    }
+
+    // Springs (explicit or implicit): the loads on this processor's
+    // fibers, by pair
+    DynamicList<contribution> parts;
+    springLoads(segs, cand, h, next, parts, touching, close);
     applyLoads(fibers, parts, loads);
     payBack(fibers, roles, h, loads);
     rec_.springs().transfer(next);
@@ -1096,6 +1122,53 @@ void Foam::fiberInteractions::contact::settleFriction
 }
 
 
+void Foam::fiberInteractions::contact::balancePair
+(
+    const PtrList<fiber>& fibers,
+    const UList<fiberIntegrator::load>& loads,
+    const pairKey& k,
+    const pairRecord& p,
+    const segment& Q,
+    const segment& O
+)
+{
+    // A fixed partner, or one that did not move in the interval, or a
+    // self-contact (solved as a pair in the chain's step): no pair to
+    // balance
+    if (!(O.m > 0) || !(O.H > 0) || !(Q.H > 0) || k[0] == k[2])
+    {
+        return;
+    }
+    const vector JQ(impulse(p, p.F, p.rThis, Q));
+    const vector JO(impulse(p, -p.F, p.rOther, O));
+    const vector J(-0.5*(firstSide(k) ? JQ + JO : JO + JQ));
+    const FixedList<label, 2> to{k[0], Q.flexible ? k[1] : -1};
+    if (!rec_.pending().found(to))
+    {
+        rec_.pending().insert(to, FixedList<vector, 2>(vector::zero));
+    }
+    FixedList<vector, 2>& back = rec_.pending()[to];
+    back[0] += J;
+
+    // Its moment, save the component about the body's axis of least
+    // inertia (a straight fiber's own axis, a segment's): what is paid
+    // back is the two sides' numerical mismatch, and about that axis
+    // the inertia is (L/d)^2 times smaller than across it.  With
+    // friction the mismatch is tangential, at the surface: paid back
+    // about the axis, it spun heavy fibers in a liquid (pipeCyclic,
+    // Stokes number 0.4) to 10^4 rad/s and 5 m/s in a 1.4 m/s flow
+    const fiberIntegrator::load& l = loads[Q.local];
+    const vector e
+    (
+        Q.flexible && k[1] < label(l.seg.size())
+      ? normalised(Q.b - Q.a)
+      : fibers[Q.local].R() & l.axisBody
+    );
+    const vector MJ(p.rThis ^ J);
+    back[1] += MJ - e*(e & MJ);
+}
+
+
 void Foam::fiberInteractions::contact::settle
 (
     const PtrList<fiber>& fibers,
@@ -1156,40 +1229,7 @@ void Foam::fiberInteractions::contact::settle
             settleFriction(k, p, Q, O);
         }
 
-        // A fixed partner, or one that did not move in the interval, or a
-        // self-contact (solved as a pair in the chain's step): no pair to
-        // balance
-        if (!(O.m > 0) || !(O.H > 0) || !(Q.H > 0) || k[0] == k[2])
-        {
-            continue;
-        }
-        const vector JQ(impulse(p, p.F, p.rThis, Q));
-        const vector JO(impulse(p, -p.F, p.rOther, O));
-        const vector J(-0.5*(firstSide(k) ? JQ + JO : JO + JQ));
-        const FixedList<label, 2> to{k[0], Q.flexible ? k[1] : -1};
-        if (!rec_.pending().found(to))
-        {
-            rec_.pending().insert(to, FixedList<vector, 2>(vector::zero));
-        }
-        FixedList<vector, 2>& back = rec_.pending()[to];
-        back[0] += J;
-
-        // Its moment, save the component about the body's axis of least
-        // inertia (a straight fiber's own axis, a segment's): what is paid
-        // back is the two sides' numerical mismatch, and about that axis
-        // the inertia is (L/d)^2 times smaller than across it.  With
-        // friction the mismatch is tangential, at the surface: paid back
-        // about the axis, it spun heavy fibers in a liquid (pipeCyclic,
-        // Stokes number 0.4) to 10^4 rad/s and 5 m/s in a 1.4 m/s flow
-        const fiberIntegrator::load& l = loads[Q.local];
-        const vector e
-        (
-            Q.flexible && k[1] < label(l.seg.size())
-          ? normalised(Q.b - Q.a)
-          : fibers[Q.local].R() & l.axisBody
-        );
-        const vector MJ(p.rThis ^ J);
-        back[1] += MJ - e*(e & MJ);
+        balancePair(fibers, loads, k, p, Q, O);
     }
     rec_.records().clear();
 }
@@ -1219,7 +1259,7 @@ void Foam::fiberInteractions::contact::writeRestart(Ostream& os) const
     rec_.writeSprings(os);
     rec_.writePending(os);
     os  << nl << "contactInterval " << hLast_ << token::SPACE << skinNext_
-        << token::SPACE << windowSkin_;
+        << token::SPACE << windows_.skin();
     rec_.writeRecent(os);
 }
 
@@ -1247,7 +1287,7 @@ void Foam::fiberInteractions::contact::readRestart(Istream& is)
             token w(is);
             if (w.isNumber())
             {
-                windowSkin_ = w.number();
+                windows_.setSkin(w.number());
             }
             else if (w.good())
             {

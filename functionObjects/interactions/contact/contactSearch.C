@@ -1018,30 +1018,16 @@ void Foam::fiberInteractions::contact::ownCopies
 }
 
 
-Foam::scalar Foam::fiberInteractions::contact::nextWindow
+void Foam::fiberInteractions::contact::owedImpulses
 (
     const PtrList<fiber>& fibers,
     const UList<role>& roles,
-    const UList<flow>& flows,
-    const scalar dt,
-    const scalar tLeft,
+    Map<label>& present,
     UList<bool>& engaged
 )
 {
-    // The shortest contact time, for the window's intervals (the fibers
-    // of the step, those a feed releases in it included, are all there)
-    tcWindow_ = shortestContactTime(fibers);
-    if (!(tLeft > 0))
-    {
-        engaged = false;
-        return tLeft;
-    }
-
-    // The fibers present (by id), and the impulses due to fibers that are
-    // gone (escaped, deposited): nothing to pay back to; a fiber that is
-    // owed one is engaged
-    engaged = false;
-    Map<label> present(2*fibers.size() + 16);
+    // The impulses due to fibers that are gone (escaped, deposited):
+    // nothing to pay back to
     forAll(fibers, fi)
     {
         if (roles[fi] != role::absent)
@@ -1061,6 +1047,32 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
             engaged[*it] = true;
         }
     }
+}
+
+
+Foam::scalar Foam::fiberInteractions::contact::nextWindow
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    const UList<flow>& flows,
+    const scalar dt,
+    const scalar tLeft,
+    UList<bool>& engaged
+)
+{
+    // The shortest contact time, for the window's intervals (the fibers
+    // of the step, those a feed releases in it included, are all there)
+    tcWindow_ = shortestContactTime(fibers);
+    if (!(tLeft > 0))
+    {
+        engaged = false;
+        return tLeft;
+    }
+
+    // The fibers present (by id); a fiber owed an impulse is engaged
+    engaged = false;
+    Map<label> present(2*fibers.size() + 16);
+    owedImpulses(fibers, roles, present, engaged);
 
     // Implicit contacts: no windows.  What an implicit contact does
     // depends on how long its intervals are (stable at any length,
@@ -1073,7 +1085,11 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
     // engaged most fibers (a dense suspension), the rest of the step is
     // one window with every fiber engaged, without the window's search
     // (the next step looks again)
-    if (implicit_ || (tLeft < (1 - 1e-9)*dt && denseFraction_ > 0.8))
+    if
+    (
+        implicit_
+     || (tLeft < (1 - 1e-9)*dt && windows_.denseFraction() > 0.8)
+    )
     {
         engaged = true;
         return tLeft;
@@ -1087,658 +1103,19 @@ Foam::scalar Foam::fiberInteractions::contact::nextWindow
     cand.clear();
     near_.valid = false;
     const scalar r0 = reach(fibers, roles);
-    const scalar skin = windowSkin_*r0;
+    const scalar skin = windows_.skin()*r0;
     const scalar r = gather(fibers, roles, segs, nullptr, skin, &flows);
     candidates(segs, r, cand, skin);
 
-    // How far a pair's gap can close within a window of length H.  A
-    // segment's centre, at velocity v and fluid velocity u (u + slip at
-    // most, with the fluctuation a new eddy may bring on top, slack), is
-    // taken by the drag towards the fluid's velocity within a time tau
-    // (tauLo to tauHi), and gravity g acts on it.  Its path leaves
-    //   - that at the fluid's velocity by at most
-    //       dFluid = slip min(H, tauHi) + slack H + g min(tauHi H, H^2/2),
-    //   - that straight on at v by at most
-    //       dStraight = ((slip + slack)/tauLo + g) H^2/2
-    //     (so, for a window far shorter than the relaxation time, the
-    //     fibers keep their velocities);
-    // and its axis turns at most at its own rate or the fluid's velocity
-    // gradient.  The gap of A and B closes by at most
-    //   min(|u_A - u_B| H + dFluid_A + dFluid_B,
-    //       |v_A - v_B| H + dStraight_A + dStraight_B)
-    //   + (l_A turn_A + l_B turn_B) H/2.
-    // Per pair (each once, in one order: the lower fiber id, then
-    // segment, first, so that both sides of a pair across processors get
-    // the same numbers): a lower bound on the gap
-    const auto turning = [](const segment& S)
-    {
-        const scalar l = mag(S.b - S.a);
-        return max(mag(S.w ^ (S.b - S.a)), S.gradU*l);
-    };
-    // Straight on: an end turns at its present rate, changed by at most
-    // (|w| + |grad u|)/tauLo per unit time (the rotation relaxes towards
-    // the fluid's as the translation does)
-    const auto turnNow = [](const segment& S)
-    {
-        return mag(S.w ^ (S.b - S.a));
-    };
-    const auto turnAccel = [](const segment& S)
-    {
-        return
-            S.tauLo > 0
-          ? (mag(S.w) + S.gradU)*mag(S.b - S.a)/S.tauLo
-          : GREAT/4;
-    };
-    const auto dFluid =
-        [](const scalar slip, const scalar slack, const scalar tauHi,
-           const scalar g, const scalar H)
-    {
-        return
-            slip*min(H, tauHi) + slack*H + g*min(tauHi*H, 0.5*sqr(H));
-    };
-    const auto accel = [](const segment& S)
-    {
-        return S.tauLo > 0 ? (S.slip + S.slack)/S.tauLo + S.g : GREAT;
-    };
-    struct bound
-    {
-        label i;
-        label j;
-        scalar gLow;
-    };
-    DynamicList<bound> bounds(cand.size());
-    for (const FixedList<label, 2>& ij : cand)
-    {
-        if (ij[1] < ij[0])
-        {
-            continue;
-        }
-        const segment& Q = segs[ij[0]];
-        const segment& P = segs[ij[1]];
-        if (!(Q.m > 0) && !(P.m > 0))
-        {
-            continue;
-        }
-        const bool qFirst =
-            Q.fiber < P.fiber || (Q.fiber == P.fiber && Q.seg < P.seg);
-        const segment& A = qFirst ? Q : P;
-        const segment& B = qFirst ? P : Q;
-        bounds.append
+    // The window's length and the fibers engaged in it (contactWindows)
+    label nMissed = 0;
+    const scalar H =
+        windows_.choose
         (
-            bound
-            {
-                ij[0], ij[1],
-                mag(0.5*(A.a + A.b - B.a - B.b))
-              - 0.5*(mag(A.b - A.a) + mag(B.b - B.a) + A.d + B.d) - range_
-            }
+            fibers, roles, segs, cand, present, r, skin, tLeft, engaged,
+            nMissed
         );
-    }
-    // Kicks: a fiber that touches another may leave the contact faster
-    // than the flow takes it, at most at the pair's relative speed plus
-    // what the spring's overlap and the cohesion can give it (their
-    // energy): sqrt(k_n/m) delta + sqrt(2 F_0 range/m), m the reduced
-    // mass; and a fiber that meets another within the window at most at
-    // their relative speed.  Any fiber's path may leave its bounds by the
-    // largest kick over the window (below)
-    const auto relSpeed = [&](const segment& A, const segment& B)
-    {
-        return
-            mag(centreVelocity(A) - centreVelocity(B))
-          + 0.5*(turnNow(A) + turnNow(B));
-    };
-    scalar kick = 0;
-    for (const bound& bd : bounds)
-    {
-        const segment& Q = segs[bd.i];
-        const segment& P = segs[bd.j];
-        if (bd.gLow > 0.1*min(Q.d, P.d) || Q.fiber == P.fiber)
-        {
-            continue;
-        }
-        const bool qFirst = Q.fiber < P.fiber;
-        const segment& A = qFirst ? Q : P;
-        const segment& B = qFirst ? P : Q;
-        const segmentDistance::result cp =
-            segmentDistance::closest(A.a, A.b, B.a, B.b);
-        const scalar delta =
-            0.5*(A.d + B.d) - mag(cp.a - cp.b);
-        if (delta + range_ < 0)
-        {
-            continue;
-        }
-        const scalar m =
-            A.m > 0 && B.m > 0 ? A.m*B.m/(A.m + B.m) : max(A.m, B.m);
-        kick =
-            max
-            (
-                kick,
-                relSpeed(A, B) + law_->releaseSpeed(m, delta)
-              + std::sqrt(2*law_->cohesionStrength()*range_/m)
-            );
-    }
-    reduce(kick, maxOp<scalar>());
-
-    // A pair's closing without kicks (symmetric in A and B), from each
-    // segment's terms (once per segment: ts) and the pair's differences
-    // of the fluid's and the centres' velocities (du, dv); the speeds of
-    // the segment's bound below, via the fluid (|u| + slip + slack) and
-    // straight on (|vc|)
-    struct segTerms
-    {
-        vector vc;
-        scalar turning;
-        scalar turnNow;
-        scalar turnAccel;
-        scalar accel;
-        scalar fluidSpeed;
-        scalar magVc;
-    };
-    List<segTerms> ts(segs.size());
-    forAll(segs, i)
-    {
-        const segment& S = segs[i];
-        ts[i] =
-            segTerms
-            {
-                centreVelocity(S), turning(S), turnNow(S),
-                min(turnAccel(S), GREAT/4), min(accel(S), GREAT/4),
-                mag(S.u) + S.slip + S.slack, mag(centreVelocity(S))
-            };
-    }
-    // A fiber near a wall or symmetry plane may rebound off it within the
-    // window, which turns its velocity by up to twice its speed: where its
-    // gap to them is less than spd H (spd: a bound on its segment's points'
-    // speed, via the fluid or straight on) its path may leave the bounds
-    // above by up to 2 spd H more
-    const auto speed = [&](const label i, const scalar H)
-    {
-        const segTerms& t = ts[i];
-        return
-            min
-            (
-                t.fluidSpeed + segs[i].g*H + 0.5*t.turning,
-                t.magVc + t.accel*H + 0.5*(t.turnNow + t.turnAccel*H)
-            );
-    };
-    const auto rebound = [&](const label i, const scalar H)
-    {
-        const scalar spd = speed(i, H);
-        return segs[i].wall < spd*H ? 2*spd*H : 0;
-    };
-    const auto closing =
-        [&]
-        (
-            const label i, const label j, const scalar du, const scalar dv,
-            const scalar H
-        )
-    {
-        const segment& A = segs[i];
-        const segment& B = segs[j];
-        const scalar viaFluid =
-            du*H
-          + dFluid(A.slip, A.slack, A.tauHi, A.g, H)
-          + dFluid(B.slip, B.slack, B.tauHi, B.g, H)
-          + 0.5*(ts[i].turning + ts[j].turning)*H;
-        const scalar straight =
-            dv*H
-          + 0.5*(ts[i].accel + ts[j].accel)*sqr(H)
-          + 0.5*(ts[i].turnNow + ts[j].turnNow)*H
-          + 0.25*min(ts[i].turnAccel + ts[j].turnAccel, GREAT/4)*sqr(H);
-        return min(viaFluid, straight) + rebound(i, H) + rebound(j, H);
-    };
-
-    // The far pairs (centres beyond r): from the largest values over all
-    // segments, with |u_A - u_B| at most the largest velocity gradient
-    // times the distance, or the range of the fluid's velocities, and
-    // |v_A - v_B| at most the range of the segments' velocities
-    scalar gradMax = 0;
-    scalar slipMax = 0;
-    scalar slackMax = 0;
-    scalar tauHiMax = 0;
-    scalar gMax = 0;
-    scalar accelMax = 0;
-    scalar turnMax = 0;
-    scalar turnNowMax = 0;
-    scalar turnAccelMax = 0;
-    vector uMin(vector::uniform(GREAT));
-    vector uMax(vector::uniform(-GREAT));
-    vector vMin(vector::uniform(GREAT));
-    vector vMax(vector::uniform(-GREAT));
-    for (const segment& sg : segs)
-    {
-        if (sg.local < 0)
-        {
-            continue;
-        }
-        gradMax = max(gradMax, sg.gradU);
-        slipMax = max(slipMax, sg.slip);
-        slackMax = max(slackMax, sg.slack);
-        tauHiMax = max(tauHiMax, sg.tauHi);
-        gMax = max(gMax, sg.g);
-        accelMax = max(accelMax, min(accel(sg), GREAT/4));
-        turnMax = max(turnMax, turning(sg));
-        turnNowMax = max(turnNowMax, turnNow(sg));
-        turnAccelMax = max(turnAccelMax, min(turnAccel(sg), GREAT/4));
-        uMin = min(uMin, sg.u);
-        uMax = max(uMax, sg.u);
-        vMin = min(vMin, centreVelocity(sg));
-        vMax = max(vMax, centreVelocity(sg));
-    }
-    reduce(gradMax, maxOp<scalar>());
-    reduce(slipMax, maxOp<scalar>());
-    reduce(slackMax, maxOp<scalar>());
-    reduce(tauHiMax, maxOp<scalar>());
-    reduce(gMax, maxOp<scalar>());
-    reduce(accelMax, maxOp<scalar>());
-    reduce(turnMax, maxOp<scalar>());
-    reduce(turnNowMax, maxOp<scalar>());
-    reduce(turnAccelMax, maxOp<scalar>());
-    reduce(uMin, minOp<vector>());
-    reduce(uMax, maxOp<vector>());
-    reduce(vMin, minOp<vector>());
-    reduce(vMax, maxOp<vector>());
-    // The fastest fiber that may rebound within a window H, wallFast(H):
-    // a segment may reach a wall or symmetry plane no sooner than its gap
-    // over its speed bound for the rest of the step (tHit); of all
-    // processors' segments, those faster than every one that may hit
-    // sooner (by tHit, the speeds rising)
-    typedef std::pair<scalar, scalar> hitSpeed;
-    std::vector<hitSpeed> hits;
-    forAll(segs, i)
-    {
-        if (segs[i].local >= 0 && rebound(i, tLeft) > 0)
-        {
-            const scalar spd = speed(i, tLeft);
-            hits.push_back({max(segs[i].wall, 0)/max(spd, VSMALL), spd});
-        }
-    }
-    const auto envelope = [](std::vector<hitSpeed>& h)
-    {
-        std::sort(h.begin(), h.end());
-        std::vector<hitSpeed> e;
-        for (const hitSpeed& x : h)
-        {
-            if (e.empty() || x.second > e.back().second)
-            {
-                e.push_back(x);
-            }
-        }
-        h.swap(e);
-    };
-    envelope(hits);
-    if (Pstream::parRun())
-    {
-        List<List<scalar>> all(Pstream::nProcs());
-        List<scalar>& mine = all[Pstream::myProcNo()];
-        mine.setSize(2*hits.size());
-        forAll(hits, k)
-        {
-            mine[2*k] = hits[k].first;
-            mine[2*k + 1] = hits[k].second;
-        }
-        fiberCompat::allGatherList(all);
-        hits.clear();
-        for (const List<scalar>& l : all)
-        {
-            for (label k = 0; k + 1 < l.size(); k += 2)
-            {
-                hits.push_back({l[k], l[k + 1]});
-            }
-        }
-        envelope(hits);
-    }
-    const auto wallFast = [&hits](const scalar H)
-    {
-        // The last of the envelope that may hit within H (the fastest)
-        const auto it =
-            std::lower_bound
-            (
-                hits.begin(), hits.end(), hitSpeed(H, -GREAT)
-            );
-        return it == hits.begin() ? 0 : std::prev(it)->second;
-    };
-    const bool none = uMax.x() < uMin.x();
-    const scalar duFar =
-        none ? 0 : min(mag(uMax - uMin), gradMax*(r + skin));
-    const scalar dvFar = none ? 0 : mag(vMax - vMin);
-    const auto farClosing = [&](const scalar H)
-    {
-        return
-            min
-            (
-                duFar*H + 2*dFluid(slipMax, slackMax, tauHiMax, gMax, H)
-              + turnMax*H,
-                dvFar*H + accelMax*sqr(H) + turnNowMax*H
-              + 0.5*turnAccelMax*sqr(H)
-            )
-          + kick*H + 2*wallFast(H)*H;
-    };
-
-    // The longest window in which the far pairs close at most the skin
-    // (the closing grows with H), then equal windows over the rest of the
-    // step
-    const auto window = [&]()
-    {
-        scalar H = tLeft;
-        if (farClosing(H) > skin)
-        {
-            scalar lo = 0;
-            for (label iter = 0; iter < 50; ++iter)
-            {
-                const scalar mid = 0.5*(lo + H);
-                (farClosing(mid) > skin ? H : lo) = mid;
-            }
-            H = max(lo, 1e-9*tLeft);
-            H = tLeft/std::ceil(tLeft/H*(1 - 1e-9));
-        }
-        return H;
-    };
-
-    // The windows this search allows: the longest, Hs (the far pairs
-    // close at most the skin), and its halves to a 32nd, Hw
-    const label nW = 6;
-    const scalar Hs = window();
-    FixedList<scalar, nW> Hw;
-    for (label j = 0; j < nW; ++j)
-    {
-        Hw[j] = tLeft/std::ceil(tLeft/(Hs/pow(2.0, j))*(1 - 1e-9));
-    }
-
-    // The pairs that could close within Hs with a kick (any window here
-    // lets a kick move a fiber at most the skin), with their gaps and
-    // closing without kicks over each Hw
-    struct nearPair
-    {
-        label bi;
-        scalar g;
-        scalar du;
-        scalar dv;
-        FixedList<scalar, nW> c;
-    };
-    DynamicList<nearPair> near(bounds.size());
-    forAll(bounds, bi)
-    {
-        const bound& bd = bounds[bi];
-        const segment& Q = segs[bd.i];
-        const segment& P = segs[bd.j];
-        const bool qFirst =
-            Q.fiber < P.fiber || (Q.fiber == P.fiber && Q.seg < P.seg);
-        const segment& A = qFirst ? Q : P;
-        const segment& B = qFirst ? P : Q;
-        const scalar du = mag(Q.u - P.u);
-        const scalar dv = mag(ts[bd.i].vc - ts[bd.j].vc);
-        const scalar within =
-            max(closing(bd.i, bd.j, du, dv, Hw[0]) + skin, 0.1*min(A.d, B.d));
-        if (bd.gLow > within)
-        {
-            continue;
-        }
-        const segmentDistance::result cp =
-            segmentDistance::closest(A.a, A.b, B.a, B.b);
-        const scalar g = mag(cp.a - cp.b) - 0.5*(A.d + B.d) - range_;
-        if (g > within)
-        {
-            continue;
-        }
-        nearPair np{bi, g, du, dv, FixedList<scalar, nW>()};
-        for (label j = 0; j < nW; ++j)
-        {
-            np.c[j] = closing(bd.i, bd.j, du, dv, Hw[j]);
-        }
-        near.append(np);
-    }
-
-    // Engaged in a window H (Hw[jH], or another where jH < 0): the fibers
-    // of a pair whose gap could close within it, or is within a tenth of
-    // a diameter (a pair close at the last interval stays one: collisions
-    // are counted with that hysteresis).  Only an engaged fiber feels
-    // contacts in the window, so only it can be kicked: a pair closes by
-    // a kick more only where one of its fibers is engaged, and the engaged
-    // fibers grow until no such pair is left (the least such set: the
-    // same on any number of processors; a periodic image's or another
-    // processor's fiber is known engaged by its id, exchanged until no
-    // processor finds more).  Two engaged fibers meet in the intervals'
-    // search.  Returns the largest relative speed of the pairs that may
-    // meet (their kick) and counts the pairs touching where one of the
-    // fibers ran through the last window on its own
-    const List<bool> owes(engaged);
-    DynamicList<label> kickOnly(near.size());
-    labelHashSet engagedIds;
-    const bool exchange = Pstream::parRun() || periodic_.size();
-    const auto engage =
-        [&]
-        (
-            const scalar H, const label jH, List<bool>& eng,
-            label& nMissed
-        )
-    {
-        eng = owes;
-        nMissed = 0;
-        kickOnly.clear();
-        engagedIds.clear();
-        const auto sides =
-            [&](const nearPair& np, const segment*& A, const segment*& B)
-        {
-            const segment& Q = segs[bounds[np.bi].i];
-            const segment& P = segs[bounds[np.bi].j];
-            const bool qFirst =
-                Q.fiber < P.fiber || (Q.fiber == P.fiber && Q.seg < P.seg);
-            A = qFirst ? &Q : &P;
-            B = qFirst ? &P : &Q;
-        };
-        // A periodic image of a fiber of this processor stands for that
-        // fiber (a pair across a periodic patch may be found from one side
-        // only: engaging the image engages the fiber)
-        const auto localOf = [&](const segment& S)
-        {
-            if (S.local >= 0)
-            {
-                return S.local;
-            }
-            const auto it = present.cfind(S.fiber);
-            return it.found() ? *it : label(-1);
-        };
-        const auto engageBoth = [&](const segment& A, const segment& B)
-        {
-            bool grew = false;
-            for (const segment* sg : {&A, &B})
-            {
-                const label li = localOf(*sg);
-                if (li >= 0 && sg->m > 0 && !eng[li])
-                {
-                    eng[li] = true;
-                    grew = true;
-                }
-            }
-            return grew;
-        };
-        const auto isEngaged = [&](const segment& S)
-        {
-            const label li = localOf(S);
-            return
-                S.m > 0
-             && (li >= 0 ? eng[li] : engagedIds.found(S.fiber));
-        };
-        scalar meetKick = 0;
-        forAll(near, k)
-        {
-            const nearPair& np = near[k];
-            const segment* A;
-            const segment* B;
-            sides(np, A, B);
-            const scalar c0 =
-                jH >= 0
-              ? np.c[jH]
-              : closing(bounds[np.bi].i, bounds[np.bi].j, np.du, np.dv, H);
-            if
-            (
-                np.g < 0 && A->fiber != B->fiber && A->local >= 0
-             && !A->later && !B->later
-             && ((A->m > 0 && !A->was) || (B->m > 0 && !B->was))
-            )
-            {
-                // Touching, though one of them ran through the last
-                // window on its own: the window's bounds failed (counted
-                // once, where the first of the pair is)
-                ++nMissed;
-            }
-            if (np.g <= max(c0, 0.1*min(A->d, B->d)))
-            {
-                engageBoth(*A, *B);
-                if (A->fiber != B->fiber)
-                {
-                    meetKick = max(meetKick, relSpeed(*A, *B));
-                }
-            }
-            else if (np.g <= c0 + kick*H && A->m > 0 && B->m > 0)
-            {
-                kickOnly.append(k);
-            }
-        }
-        while (true)
-        {
-            for (bool grew = true; grew; )
-            {
-                grew = false;
-                for (const label k : kickOnly)
-                {
-                    const segment* A;
-                    const segment* B;
-                    sides(near[k], A, B);
-                    if (isEngaged(*A) || isEngaged(*B))
-                    {
-                        grew = engageBoth(*A, *B) || grew;
-                    }
-                }
-            }
-            if (!exchange)
-            {
-                break;
-            }
-            List<labelList> ids(Pstream::nProcs());
-            DynamicList<label> mine;
-            forAll(fibers, fi)
-            {
-                if (eng[fi] && !engagedIds.found(fibers[fi].id()))
-                {
-                    mine.append(fibers[fi].id());
-                }
-            }
-            ids[Pstream::myProcNo()] = std::move(mine);
-            fiberCompat::allGatherList(ids);
-            label nNew = 0;
-            for (const labelList& l : ids)
-            {
-                for (const label id : l)
-                {
-                    nNew += engagedIds.insert(id);
-                }
-            }
-            if (nNew == 0)
-            {
-                break;
-            }
-        }
-        for (const label k : kickOnly)
-        {
-            const segment* A;
-            const segment* B;
-            sides(near[k], A, B);
-            if ((isEngaged(*A) || isEngaged(*B)) && A->fiber != B->fiber)
-            {
-                meetKick = max(meetKick, relSpeed(*A, *B));
-            }
-        }
-        return returnReduce(meetKick, maxOp<scalar>());
-    };
-    const auto nEngagedOf = [&](const List<bool>& eng)
-    {
-        label n = 0;
-        forAll(fibers, fi)
-        {
-            n += roles[fi] == role::free && eng[fi];
-        }
-        return returnReduce(n, sumOp<label>());
-    };
-    label nMove = 0;
-    forAll(fibers, fi)
-    {
-        nMove += roles[fi] == role::free;
-    }
-    reduce(nMove, sumOp<label>());
-
-    // The window's length.  Every fiber ends a sub-step at a window's end,
-    // and an engaged fiber at each of its intervals, about contactSteps
-    // per contact time.  Of the windows Hw the one with the fewest such
-    // stops per unit time: (moving fibers + engaged ones x intervals in
-    // it)/H
-    const scalar hc = tcWindow_/contactSteps_;
-    scalar Hbest = Hs;
-    label jBest = 0;
-    scalar costBest = GREAT;
-    List<bool> eng(engaged.size());
-    for (label j = 0; j < nW; ++j)
-    {
-        label nMissed = 0;
-        engage(Hw[j], j, eng, nMissed);
-        const scalar cost =
-            (nMove + nEngagedOf(eng)*max(1, Hw[j]/hc))/Hw[j];
-        if (cost < costBest)
-        {
-            costBest = cost;
-            Hbest = Hw[j];
-            jBest = j;
-        }
-    }
-
-    // The pairs that may meet within the window may kick their fibers at
-    // up to their relative speed: where that is more than the kicks
-    // allowed for, the window is taken again with it (at most twice)
-    scalar H = 0;
-    for (label pass = 0; pass < 3; ++pass)
-    {
-        const scalar Hk = window();
-        H = min(Hbest, Hk);
-        label nMissed = 0;
-        const scalar meetKick =
-            engage(H, H == Hw[jBest] ? jBest : -1, eng, nMissed);
-        if (meetKick <= kick || pass == 2)
-        {
-            nMissed_ += nMissed;
-            break;
-        }
-        kick = meetKick;
-    }
-    forAll(engaged, fi)
-    {
-        engaged[fi] = eng[fi];
-    }
-
-    // The next window's skin: twice as thick where the longest window of
-    // this one was the cheapest and did not reach the step's end (while
-    // the search finds at most 8 pairs per segment), half as thick where
-    // one at most a quarter as long was
-    // (pairs over all processors: the same on any number of them)
-    label nSeg = 0;
-    for (const segment& sg : segs)
-    {
-        nSeg += sg.local >= 0;
-    }
-    const scalar pairsPerSeg =
-        scalar(returnReduce(cand.size(), sumOp<label>()))
-       /max(returnReduce(nSeg, sumOp<label>()), 1);
-    if (jBest == 0 && Hs < (1 - 1e-9)*tLeft && pairsPerSeg < 8)
-    {
-        windowSkin_ = min(2*windowSkin_, 16.0);
-    }
-    else if (jBest >= 2 || pairsPerSeg > 32)
-    {
-        windowSkin_ = max(0.5*windowSkin_, 0.5);
-    }
-
-    // The fraction engaged (of the fibers that move)
-    denseFraction_ = nMove > 0 ? scalar(nEngagedOf(eng))/nMove : 0;
-
+    nMissed_ += nMissed;
     segs.clear();
     cand.clear();
     return H;
@@ -1775,6 +1152,39 @@ void Foam::fiberInteractions::contact::addImages
             {
                 segs.append(image(segs[i], T, ti));
             }
+        }
+    }
+}
+
+
+void Foam::fiberInteractions::contact::receiveGhosts
+(
+    DynamicList<segment>& segs,
+    PstreamBuffers& pBufs
+) const
+{
+    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+    {
+        if (proci == Pstream::myProcNo())
+        {
+            continue;
+        }
+        UIPstream is(proci, pBufs);
+        const label n = readLabel(is);
+        DynamicList<scalar>& rbuf = ghostRecv_;
+        rbuf.resize(nPacked*n);
+        is.read
+        (
+            reinterpret_cast<char*>(rbuf.data()),
+            std::streamsize(rbuf.size()*sizeof(scalar))
+        );
+        segs.reserve(segs.size() + n);
+        label k = 0;
+        for (label j = 0; j < n; ++j)
+        {
+            segment s;
+            unpackSegment(rbuf, k, s);
+            segs.append(s);
         }
     }
 }
@@ -1846,30 +1256,7 @@ void Foam::fiberInteractions::contact::addGhosts
         );
     }
     pBufs.finishedSends();
-    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
-    {
-        if (proci == Pstream::myProcNo())
-        {
-            continue;
-        }
-        UIPstream is(proci, pBufs);
-        const label n = readLabel(is);
-        DynamicList<scalar>& rbuf = ghostRecv_;
-        rbuf.resize(nPacked*n);
-        is.read
-        (
-            reinterpret_cast<char*>(rbuf.data()),
-            std::streamsize(rbuf.size()*sizeof(scalar))
-        );
-        segs.reserve(segs.size() + n);
-        label k = 0;
-        for (label j = 0; j < n; ++j)
-        {
-            segment s;
-            unpackSegment(rbuf, k, s);
-            segs.append(s);
-        }
-    }
+    receiveGhosts(segs, pBufs);
 }
 
 

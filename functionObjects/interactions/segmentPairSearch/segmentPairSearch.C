@@ -69,6 +69,66 @@ void Foam::fiberInteractions::segmentPairSearch::build
 }
 
 
+inline void Foam::fiberInteractions::segmentPairSearch::densePair
+(
+    const UList<contactSegment>& segs,
+    const denseEntry& A,
+    const int64_t e,
+    denseScan& s
+) const
+{
+    const bool lp = cl_[e];
+    if (!A.local && !lp)
+    {
+        return;
+    }
+    const label p = byCell_[e];
+    if (cf_[e] == A.fiber && !selfPair(segs[A.q], segs[p]))
+    {
+        return;
+    }
+    const vector dc(cc_[e] - A.c);
+    const scalar d2 = magSqr(dc);
+    const scalar within = A.e + ce_[e];
+    if (d2 > sqr(within + s.extra))
+    {
+        return;
+    }
+    if (d2 >= s.rFar2)
+    {
+        const scalar v2 = magSqr(cv_[e] - A.v);
+        if (v2 > s.lambda2*d2)
+        {
+            s.lambda2 = v2/d2;
+        }
+    }
+    if (!boxesMeet(dc, A.h, ch_[e], s.extra))
+    {
+        return;
+    }
+    const bool near =
+        s.inReach
+     && d2 <= sqr(within + s.range)
+     && boxesMeet(dc, A.h, ch_[e], s.range);
+    if (A.local)
+    {
+        s.cand.append(indexPair{A.q, p});
+        if (near)
+        {
+            s.inReach->append(indexPair{A.q, p});
+        }
+    }
+    if (lp)
+    {
+        s.cand.append(indexPair{p, A.q});
+        if (near)
+        {
+            s.inReach->append(indexPair{p, A.q});
+        }
+    }
+}
+
+
 void Foam::fiberInteractions::segmentPairSearch::dense
 (
     const UList<contactSegment>& segs,
@@ -81,20 +141,17 @@ void Foam::fiberInteractions::segmentPairSearch::dense
     scalar* lambda
 ) const
 {
-    const std::vector<point>& cc = cc_;
-    const std::vector<scalar>& ce = ce_;
-    const std::vector<vector>& ch = ch_;
-    const std::vector<vector>& cv = cv_;
-    const std::vector<char>& cl = cl_;
-
     // A pair passes where its centres are within the sum of the half
     // lengths and diameters, reach and skin, and its boxes meet (the box
     // test holds every pair whose surfaces are within the cohesion range
     // and skin, or the range and a tenth of a diameter: within reach).
     // lambda: the largest relative speed of the centres per distance of
     // the pairs whose centres pass and are at least the reach apart
-    const scalar rFar2 = lambda ? sqr(max(r - skin, 0)) : GREAT;
-    scalar lambda2 = 0;
+    denseScan scan
+    {
+        lambda ? sqr(max(r - skin, 0)) : GREAT, range + skin, range, 0,
+        cand, inReach
+    };
 
     // In cell order, every entry against those after it in its own cell
     // and against the 13 neighbouring cells ahead of it (a half stencil:
@@ -103,19 +160,16 @@ void Foam::fiberInteractions::segmentPairSearch::dense
     // (local, other), and both orders where both are local
     const int64_t sy = n[0];
     const int64_t sz = n[0]*n[1];
-    const scalar extra = range + skin;
     FixedList<std::pair<int64_t, int64_t>, 6> rows;
     const label ns = segs.size();
     for (label a = 0; a < ns; ++a)
     {
         const label q = byCell_[a];
-        const contactSegment& Q = segs[q];
-        const bool lq = cl[a];
         const int64_t k = cellOf_[q];
-        const point& cq = cc[a];
-        const scalar eq = ce[a];
-        const vector& hq = ch[a];
-        const vector& vq = cv[a];
+        const denseEntry A
+        {
+            q, segs[q].fiber, bool(cl_[a]), cc_[a], ce_[a], ch_[a], cv_[a]
+        };
 
         // The rest of its own cell, the next cell of its row, the next
         // row's three cells and the nine of the next layer
@@ -129,61 +183,67 @@ void Foam::fiberInteractions::segmentPairSearch::dense
         {
             for (int64_t e = row.first; e < row.second; ++e)
             {
-                const bool lp = cl[e];
-                if (!lq && !lp)
-                {
-                    continue;
-                }
-                const label p = byCell_[e];
-                if (cf_[e] == Q.fiber && !selfPair(Q, segs[p]))
-                {
-                    continue;
-                }
-                const vector dc(cc[e] - cq);
-                const scalar d2 = magSqr(dc);
-                const scalar within = eq + ce[e];
-                if (d2 > sqr(within + extra))
-                {
-                    continue;
-                }
-                if (d2 >= rFar2)
-                {
-                    const scalar v2 = magSqr(cv[e] - vq);
-                    if (v2 > lambda2*d2)
-                    {
-                        lambda2 = v2/d2;
-                    }
-                }
-                if (!boxesMeet(dc, hq, ch[e], extra))
-                {
-                    continue;
-                }
-                const bool near =
-                    inReach
-                 && d2 <= sqr(within + range)
-                 && boxesMeet(dc, hq, ch[e], range);
-                if (lq)
-                {
-                    cand.append(indexPair{q, p});
-                    if (near)
-                    {
-                        inReach->append(indexPair{q, p});
-                    }
-                }
-                if (lp)
-                {
-                    cand.append(indexPair{p, q});
-                    if (near)
-                    {
-                        inReach->append(indexPair{p, q});
-                    }
-                }
+                densePair(segs, A, e, scan);
             }
         }
     }
     if (lambda)
     {
-        *lambda = max(*lambda, sqrt(lambda2));
+        *lambda = max(*lambda, sqrt(scan.lambda2));
+    }
+}
+
+
+inline void Foam::fiberInteractions::segmentPairSearch::sparsePair
+(
+    const UList<contactSegment>& segs,
+    const label q,
+    const label p,
+    const scalar r,
+    const scalar range,
+    const scalar skin,
+    DynamicList<indexPair>& cand,
+    scalar* lambda
+) const
+{
+    const contactSegment& Q = segs[q];
+    const contactSegment& P = segs[p];
+    const scalar within = ext_[q] + ext_[p] + range + skin;
+    const vector dc(c_[p] - c_[q]);
+    const scalar d2 = magSqr(dc);
+    if
+    (
+        (P.fiber != Q.fiber || selfPair(Q, P))
+     && d2 <= sqr(within)
+    )
+    {
+        // Each pair once for lambda (both orders come)
+        if
+        (
+            lambda
+         && (P.local < 0 || q < p)
+         && d2 >= sqr(max(r - skin, 0))
+        )
+        {
+            *lambda =
+                max
+                (
+                    *lambda,
+                    mag(centreVelocity(P) - centreVelocity(Q))
+                   /sqrt(d2)
+                );
+        }
+        if
+        (
+            boxesMeet
+            (
+                dc, halfExtent(Q), halfExtent(P),
+                range + skin
+            )
+        )
+        {
+            cand.append(indexPair{q, p});
+        }
     }
 }
 
@@ -249,45 +309,10 @@ void Foam::fiberInteractions::segmentPairSearch::sparse
                     ++it
                 )
                 {
-                    const label p = it->second;
-                    const contactSegment& P = segs[p];
-                    const scalar within = ext_[q] + ext_[p] + range + skin;
-                    const vector dc(c_[p] - c_[q]);
-                    const scalar d2 = magSqr(dc);
-                    if
+                    sparsePair
                     (
-                        (P.fiber != Q.fiber || selfPair(Q, P))
-                     && d2 <= sqr(within)
-                    )
-                    {
-                        // Each pair once for lambda (both orders come)
-                        if
-                        (
-                            lambda
-                         && (P.local < 0 || q < p)
-                         && d2 >= sqr(max(r - skin, 0))
-                        )
-                        {
-                            *lambda =
-                                max
-                                (
-                                    *lambda,
-                                    mag(centreVelocity(P) - centreVelocity(Q))
-                                   /sqrt(d2)
-                                );
-                        }
-                        if
-                        (
-                            boxesMeet
-                            (
-                                dc, halfExtent(Q), halfExtent(P),
-                                range + skin
-                            )
-                        )
-                        {
-                            cand.append(indexPair{q, p});
-                        }
-                    }
+                        segs, q, it->second, r, range, skin, cand, lambda
+                    );
                 }
             }
         }
