@@ -142,8 +142,7 @@ Foam::fiberInteractions::contact::contact
     contactSteps_(20),
     range_(0),
     implicit_(false),
-    constraints_(false),
-    constraintSolver_(*this),
+    scheme_(),
     maxApproach_(0.25),
     hLast_(0),
     warnedFlexible_(false),
@@ -195,7 +194,7 @@ void Foam::fiberInteractions::contact::read
     keywordCheck::noEffect
     (
         dict, implicit_ ? "contactSteps" : "maxApproach",
-        constraints_
+        scheme_->type() == "constraints"
       ? "with scheme constraints (the intervals follow the approach of"
         " pairs, maxApproach)"
       : implicit_
@@ -222,21 +221,7 @@ void Foam::fiberInteractions::contact::read
 
     Info<< "    Fiber contacts: ";
     law_->describe(Info);
-    if (constraints_)
-    {
-        Info<< ", constraints per island (intervals by the approach of"
-            << " pairs, at most " << maxApproach_ << " diameters each)";
-    }
-    else if (implicit_)
-    {
-        Info<< ", implicit: intervals by the approach of pairs, at most "
-            << maxApproach_ << " diameters each (collisions inelastic"
-            << " where the intervals exceed the contact time)";
-    }
-    else
-    {
-        Info<< ", " << contactSteps_ << " intervals per contact time";
-    }
+    scheme_->describe(Info);
     if (law_->cohesionStrength() > 0)
     {
         Info<< ", cohesion " << law_->cohesionStrength() << " N within "
@@ -275,18 +260,16 @@ void Foam::fiberInteractions::contact::readScheme
                )
             << endl;
     }
-    if
-    (
-        scheme != "explicit" && scheme != "implicit"
-     && scheme != "constraints"
-    )
+    if (!fiberContactScheme::found(scheme))
     {
         FatalIOErrorInFunction(dict)
             << "Entry 'scheme' must be explicit (springs resolved in time:"
             << " bouncing, exact restitution), implicit (implicit springs"
             << " on each fiber) or constraints (the contacts of fibers that"
             << " touch solved together per island), not '" << scheme << "'"
-            << exit(FatalIOError);
+            << " (schemes: "
+            << fiberContactScheme::modelConstructorTablePtr_->sortedToc()
+            << ")" << exit(FatalIOError);
     }
     if (dict.found("implicit") && dict.found("scheme") && implicitOn)
     {
@@ -295,8 +278,8 @@ void Foam::fiberInteractions::contact::readScheme
             << " given: 'implicit on' is 'scheme implicit'; keep one"
             << exit(FatalIOError);
     }
-    implicit_ = scheme != "explicit";
-    constraints_ = scheme == "constraints";
+    scheme_ = fiberContactScheme::New(scheme, dict, *this);
+    implicit_ = scheme_->adaptive();
 }
 
 
@@ -720,7 +703,7 @@ void Foam::fiberInteractions::contact::warnFlexible
     const UList<role>& roles
 )
 {
-    if (!implicit_ || constraints_ || warnedFlexible_)
+    if (warnedFlexible_)
     {
         return;
     }
@@ -798,6 +781,38 @@ Foam::scalar Foam::fiberInteractions::contact::approachInterval
 }
 
 
+Foam::scalar Foam::fiberInteractions::contact::equalParts
+(
+    const scalar hMax,
+    const scalar tLeft
+)
+{
+    return
+        hMax < tLeft*(1 - 1e-9)
+      ? tLeft/std::ceil(tLeft/hMax*(1 - 1e-9))
+      : tLeft;
+}
+
+
+Foam::scalar Foam::fiberInteractions::contact::adaptiveInterval
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    const scalar tLeft,
+    const scalar tc
+)
+{
+    // The longest interval the approach allows; the rest of the step split
+    // into equal parts no longer than that; the next skin from what the
+    // far pairs could close in it
+    scalar vFar = 0;
+    const scalar hMax = approachInterval(fibers, roles, tc, tLeft, vFar);
+    const scalar h = equalParts(hMax, tLeft);
+    skinNext_ = 3*vFar*h;
+    return h;
+}
+
+
 Foam::scalar Foam::fiberInteractions::contact::nextInterval
 (
     const PtrList<fiber>& fibers,
@@ -814,37 +829,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
     // The contact time of the lightest fiber, or of a flexible fiber's
     // lightest segment (the body a contact strikes)
     const scalar tc = tcWindow_ > 0 ? tcWindow_ : shortestContactTime(fibers);
-
-    // The longest interval allowed; the rest of the step is split into
-    // equal parts no longer than that
-    scalar hMax = GREAT;
-    warnFlexible(fibers, roles);
-    scalar vFar = 0;
-    if (implicit_)
-    {
-        hMax = approachInterval(fibers, roles, tc, tLeft, vFar);
-    }
-    else if (tc < GREAT)
-    {
-        // The contact time resolved by contactSteps: equal intervals over
-        // the step
-        hMax = dt/max(1, label(std::ceil(dt*contactSteps_/tc*(1 - 1e-9))));
-    }
-    scalar h =
-        hMax < tLeft*(1 - 1e-9)
-      ? tLeft/std::ceil(tLeft/hMax*(1 - 1e-9))
-      : tLeft;
-    if (!implicit_)
-    {
-        // Ended at a graze within it, so that the next interval's start
-        // sees the touch
-        h = sweptInterval(fibers, roles, h);
-    }
-    if (implicit_)
-    {
-        skinNext_ = 3*vFar*h;
-    }
-    return h;
+    return scheme_->interval(fibers, roles, dt, tLeft, tc);
 }
 
 
@@ -986,6 +971,28 @@ void Foam::fiberInteractions::contact::springLoads
 }
 
 
+void Foam::fiberInteractions::contact::springInteract
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    const UList<segment>& segs,
+    const UList<FixedList<label, 2>>& cand,
+    const scalar h,
+    springTable& next,
+    UList<fiberIntegrator::load>& loads,
+    DynamicList<FixedList<label, 2>>& touching,
+    DynamicList<FixedList<label, 2>>& close
+)
+{
+    // The loads on this processor's fibers, by pair, and the impulses to
+    // pay back (implicit)
+    DynamicList<contribution> parts;
+    springLoads(segs, cand, h, next, parts, touching, close);
+    applyLoads(fibers, parts, loads);
+    payBack(fibers, roles, h, loads);
+}
+
+
 void Foam::fiberInteractions::contact::interact
 (
     const PtrList<fiber>& fibers,
@@ -1012,27 +1019,9 @@ void Foam::fiberInteractions::contact::interact
     DynamicList<FixedList<label, 2>> touching;
     DynamicList<FixedList<label, 2>> close;
     rec_.records().clear();
-    if (constraints_)
-    {
-        constraintSolver_.constrain
-        (
-            fibers, segs, cand, h, next, loads, touching, close
-        );
-        rec_.springs().transfer(next);
-        count(touching, close);
-        segs.clear();
-        cand.clear();
-        near_.segs.transfer(segs);
-        near_.inReach.transfer(cand);
-        return;
-    }
 
-    // Springs (explicit or implicit): the loads on this processor's
-    // fibers, by pair
-    DynamicList<contribution> parts;
-    springLoads(segs, cand, h, next, parts, touching, close);
-    applyLoads(fibers, parts, loads);
-    payBack(fibers, roles, h, loads);
+    // The scheme's loads (fiberContactScheme)
+    scheme_->loads(fibers, roles, segs, cand, h, next, loads, touching, close);
     rec_.springs().transfer(next);
     if (rec_.sliding().size())
     {
@@ -1176,10 +1165,17 @@ void Foam::fiberInteractions::contact::settle
     const UList<fiberIntegrator::load>& loads
 )
 {
-    if (!implicit_ || constraints_)
-    {
-        return;
-    }
+    scheme_->settle(fibers, roles, loads);
+}
+
+
+void Foam::fiberInteractions::contact::settleSprings
+(
+    const PtrList<fiber>& fibers,
+    const UList<role>& roles,
+    const UList<fiberIntegrator::load>& loads
+)
+{
 
     // Each implicit contact's two sides took impulses J_A and J_B of
     // which the sum is not zero where the partners did not move as each

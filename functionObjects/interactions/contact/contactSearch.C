@@ -667,6 +667,74 @@ Foam::scalar Foam::fiberInteractions::contact::sweptInterval
 }
 
 
+bool Foam::fiberInteractions::contact::grazed
+(
+    const FixedList<label, 2>& ij,
+    const UList<FixedList<vector, 2>>& move,
+    const UList<scalar>& moveMax,
+    const UList<scalar>& bend,
+    bool& touches
+) const
+{
+    const sweptSegment& P = sweptSegs_[ij[0]];
+    const sweptSegment& Q = sweptSegs_[ij[1]];
+
+    // On the straight paths no point of one axis moves against one
+    // of the other by more than the largest relative motion of
+    // their ends, dRel (the relative motion is bilinear along the
+    // axes: its largest at two ends).  The axes' distance at time
+    // t of the interval is at least g0 - t dRel and g1 - (1 - t)
+    // dRel (g0, g1: at its start and end), so at least (g0 + g1
+    // - dRel)/2: a pair farther apart than that and the touch
+    // cannot have met (most pairs move together in the flow)
+    const scalar touch = 0.5*(P.d + Q.d) + range_;
+    const scalar gMax = moveMax[ij[0]] + moveMax[ij[1]] + touch;
+    const scalar g0 = axesApart(P.a, P.b, Q.a, Q.b);
+    if (g0 > gMax)
+    {
+        return false;
+    }
+    const FixedList<vector, 2>& mP = move[ij[0]];
+    const FixedList<vector, 2>& mQ = move[ij[1]];
+    const scalar dRel =
+        std::sqrt
+        (
+            max
+            (
+                max(magSqr(mP[0] - mQ[0]), magSqr(mP[0] - mQ[1])),
+                max(magSqr(mP[1] - mQ[0]), magSqr(mP[1] - mQ[1]))
+            )
+        );
+    if
+    (
+        g0 > dRel + touch
+     || 0.5*(g0 + axesApart
+         (
+             P.a + mP[0], P.b + mP[1], Q.a + mQ[0], Q.b + mQ[1]
+         ) - dRel) > touch
+    )
+    {
+        return false;
+    }
+    const FixedList<point, 4> p{P.a, P.b, Q.a, Q.b};
+    const FixedList<vector, 4> m{mP[0], mP[1], mQ[0], mQ[1]};
+
+    // A graze along the straight paths that is deeper than the
+    // paths can stray from them: certain (a shallower one may be
+    // an artefact of the straight paths)
+    const scalar margin = bend[ij[0]] + bend[ij[1]];
+    if
+    (
+        grazeTime(p, m, touch, 1, &touches) < 1
+     && (margin < SMALL*touch || grazeTime(p, m, touch - margin, 1) < 1)
+    )
+    {
+        return true;
+    }
+    return false;
+}
+
+
 void Foam::fiberInteractions::contact::missedGrazes
 (
     const scalar t,
@@ -687,7 +755,7 @@ void Foam::fiberInteractions::contact::missedGrazes
         // The pairs of different fibers, the lower id first and of this
         // processor (each pair on one processor); by fiber pair, those
         // that grazed and those that touched at either end (seen there)
-        HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> grazed;
+        HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> pairs;
         DynamicList<FixedList<label, 2>> seen;
 
         countJumped(moveMax);
@@ -706,33 +774,10 @@ void Foam::fiberInteractions::contact::missedGrazes
             }
             const sweptSegment& P = sweptSegs_[ij[0]];
             const sweptSegment& Q = sweptSegs_[ij[1]];
-
-            // No point of one axis moved against one of the other by more
-            // than the two segments' ends did: a pair whose axes were
-            // farther apart than that and the touch cannot have met
-            const scalar touch = 0.5*(P.d + Q.d) + range_;
-            const scalar gMax = moveMax[ij[0]] + moveMax[ij[1]] + touch;
-            if (axesApart(P.a, P.b, Q.a, Q.b) > gMax)
-            {
-                continue;
-            }
-            const FixedList<vector, 2>& mP = move[ij[0]];
-            const FixedList<vector, 2>& mQ = move[ij[1]];
-            const FixedList<point, 4> p{P.a, P.b, Q.a, Q.b};
-            const FixedList<vector, 4> m{mP[0], mP[1], mQ[0], mQ[1]};
             bool touches = false;
-
-            // A graze along the straight paths that is deeper than the
-            // paths can stray from them: certain (a shallower one may be
-            // an artefact of the straight paths)
-            const scalar margin = bend[ij[0]] + bend[ij[1]];
-            if
-            (
-                grazeTime(p, m, touch, 1, &touches) < 1
-             && (margin < SMALL*touch || grazeTime(p, m, touch - margin, 1) < 1)
-            )
+            if (grazed(ij, move, moveMax, bend, touches))
             {
-                grazed.insert(FixedList<label, 2>{P.fiber, Q.fiber});
+                pairs.insert(FixedList<label, 2>{P.fiber, Q.fiber});
             }
             if (touches)
             {
@@ -742,13 +787,13 @@ void Foam::fiberInteractions::contact::missedGrazes
 
         // A graze of fibers touching at the interval's start or end by
         // other segments (a contact that moved across a joint) was seen
-        if (grazed.size())
+        if (pairs.size())
         {
             for (const FixedList<label, 2>& f : seen)
             {
-                grazed.erase(f);
+                pairs.erase(f);
             }
-            nMissed_ += grazed.size();
+            nMissed_ += pairs.size();
         }
     }
 
