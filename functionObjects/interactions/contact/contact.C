@@ -100,17 +100,6 @@ inline bool firstSide(const fiberInteractions::contact::pairKey& k)
 }
 
 
-//- The reduced mass of two fibers (mass 0: fixed, infinite)
-inline scalar reducedMass(const scalar a, const scalar b)
-{
-    if (a > 0 && b > 0)
-    {
-        return a*b/(a + b);
-    }
-    return a > 0 ? a : b;
-}
-
-
 //- A unit vector normal to v
 vector normalTo(const vector& v)
 {

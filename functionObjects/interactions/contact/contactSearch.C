@@ -429,8 +429,7 @@ Foam::scalar Foam::fiberInteractions::contact::slideLimit
         return GREAT;
     }
     const scalar vt = mag(vr - (vr & n)*n);
-    const scalar m =
-        A.m > 0 && B.m > 0 ? A.m*B.m/(A.m + B.m) : max(A.m, B.m);
+    const scalar m = reducedMass(A.m, B.m);
     return max(0.1*vt*m/FtMax, contactTime(m));
 }
 

@@ -153,8 +153,7 @@ bool Foam::fiberInteractions::contactConstraints::constraintOf
     {
         return false;
     }
-    const scalar m =
-        A.m > 0 && B.m > 0 ? A.m*B.m/(A.m + B.m) : max(A.m, B.m);
+    const scalar m = reducedMass(A.m, B.m);
     // The dashpots act on a pair that touches at the start; on one apart
     // at the start only the spring on the end overlap (a dashpot there
     // would push across the gap before the pair touches)
@@ -171,6 +170,8 @@ bool Foam::fiberInteractions::contactConstraints::constraintOf
     return true;
 }
 
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::fiberInteractions::contactConstraints::constrain
 (
@@ -248,6 +249,8 @@ void Foam::fiberInteractions::contactConstraints::constrain
     applyConstraints(fibers, localOf, next, loads);
 }
 
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
 void Foam::fiberInteractions::contactConstraints::decidePair
 (

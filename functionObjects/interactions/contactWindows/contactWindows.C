@@ -181,8 +181,7 @@ Foam::scalar Foam::fiberInteractions::contactWindows::contactKick() const
         {
             continue;
         }
-        const scalar m =
-            A.m > 0 && B.m > 0 ? A.m*B.m/(A.m + B.m) : max(A.m, B.m);
+        const scalar m = reducedMass(A.m, B.m);
         kick =
             max
             (
