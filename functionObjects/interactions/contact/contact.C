@@ -183,14 +183,7 @@ void Foam::fiberInteractions::contact::read
     keywordCheck::noEffect
     (
         dict, implicit_ ? "contactSteps" : "maxApproach",
-        scheme_->type() == "constraints"
-      ? "with scheme constraints (the intervals follow the approach of"
-        " pairs, maxApproach)"
-      : implicit_
-      ? "with implicit on (the intervals follow the approach of pairs,"
-        " maxApproach)"
-      : "with explicit contacts (implicit off: the intervals resolve the"
-        " contact time, contactSteps)"
+        scheme_->intervalsRule()
     );
     // A two-dimensional case (empty or wedge patches) holds every fiber in
     // one plane: two fibers that cross there meet axis to axis, and the

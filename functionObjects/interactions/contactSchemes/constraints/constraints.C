@@ -43,6 +43,14 @@ Foam::label Foam::fiberContactSchemes::constraints::pairsAcross() const
 }
 
 
+const char* Foam::fiberContactSchemes::constraints::intervalsRule() const
+{
+    return
+        "with scheme constraints (the intervals follow the approach of"
+        " pairs, maxApproach)";
+}
+
+
 void Foam::fiberContactSchemes::constraints::describe(Ostream& os) const
 {
     os  << ", constraints per island (intervals by the approach of"

@@ -36,6 +36,14 @@ Foam::fiberContactSchemes::explicitSprings::explicitSprings(contact& model)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const char* Foam::fiberContactSchemes::explicitSprings::intervalsRule() const
+{
+    return
+        "with explicit contacts (implicit off: the intervals resolve the"
+        " contact time, contactSteps)";
+}
+
+
 void Foam::fiberContactSchemes::explicitSprings::describe(Ostream& os) const
 {
     os  << ", " << model_.contactSteps_ << " intervals per contact time";

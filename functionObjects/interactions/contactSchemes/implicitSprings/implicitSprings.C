@@ -36,6 +36,14 @@ Foam::fiberContactSchemes::implicitSprings::implicitSprings(contact& model)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const char* Foam::fiberContactSchemes::implicitSprings::intervalsRule() const
+{
+    return
+        "with implicit on (the intervals follow the approach of pairs,"
+        " maxApproach)";
+}
+
+
 void Foam::fiberContactSchemes::implicitSprings::describe(Ostream& os) const
 {
     os  << ", implicit: intervals by the approach of pairs, at most "
