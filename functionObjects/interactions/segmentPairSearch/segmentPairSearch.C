@@ -52,8 +52,10 @@ void Foam::fiberInteractions::segmentPairSearch::build
         start_[k] += start_[k - 1];
     }
     fill_.assign(start_.begin(), start_.end() - 1);
+    ck_.resize(ns);
     for (size_t i = 0; i < ns; ++i)
     {
+        ck_[fill_[cellOf_[i]]] = cellOf_[i];
         byCell_[fill_[cellOf_[i]]++] = label(i);
     }
     for (size_t e = 0; e < ns; ++e)
@@ -64,7 +66,7 @@ void Foam::fiberInteractions::segmentPairSearch::build
         ch_[e] = halfExtent(segs[p]);
         cv_[e] = centreVelocity(segs[p]);
         cf_[e] = segs[p].fiber;
-        cl_[e] = segs[p].local >= 0;
+        cl_[e] = char((segs[p].local >= 0) | (segs[p].flexible << 1));
     }
 }
 
@@ -77,20 +79,26 @@ inline void Foam::fiberInteractions::segmentPairSearch::densePair
     denseScan& s
 ) const
 {
-    const bool lp = cl_[e];
+    // The centres' distance first: it rejects most of the entries met,
+    // from the two arrays read in cell order
+    const vector dc(cc_[e] - A.c);
+    const scalar d2 = magSqr(dc);
+    const scalar within = A.e + ce_[e];
+    if (d2 > sqr(within + s.extra))
+    {
+        return;
+    }
+    const bool lp = cl_[e] & 1;
     if (!A.local && !lp)
     {
         return;
     }
     const label p = byCell_[e];
-    if (cf_[e] == A.fiber && !selfPair(segs[A.q], segs[p]))
-    {
-        return;
-    }
-    const vector dc(cc_[e] - A.c);
-    const scalar d2 = magSqr(dc);
-    const scalar within = A.e + ce_[e];
-    if (d2 > sqr(within + s.extra))
+    if
+    (
+        cf_[e] == A.fiber
+     && (!A.flexible || !selfPair(segs[A.q], segs[p]))
+    )
     {
         return;
     }
@@ -165,10 +173,11 @@ void Foam::fiberInteractions::segmentPairSearch::dense
     for (label a = 0; a < ns; ++a)
     {
         const label q = byCell_[a];
-        const int64_t k = cellOf_[q];
+        const int64_t k = ck_[a];
         const denseEntry A
         {
-            q, segs[q].fiber, bool(cl_[a]), cc_[a], ce_[a], ch_[a], cv_[a]
+            q, cf_[a], bool(cl_[a] & 1), bool(cl_[a] & 2), cc_[a], ce_[a],
+            ch_[a], cv_[a]
         };
 
         // The rest of its own cell, the next cell of its row, the next
