@@ -23,6 +23,7 @@ License
 
 #include <algorithm>
 #include <ctime>
+#include <utility>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -509,6 +510,7 @@ void Foam::fiberCloud::calcCellLength()
 
 void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
 {
+    sortByCell();
     beginStep(t0, dt);
     if (mesh_.moving())
     {
@@ -963,6 +965,54 @@ void Foam::fiberCloud::compact()
     }
     fibers_.setSize(n);
     step_.setSize(n);
+}
+
+
+void Foam::fiberCloud::sortByCell()
+{
+    // (Before the first step there are no states yet)
+    const label n = fibers_.size();
+    if (step_.size() && step_.size() != n)
+    {
+        return;
+    }
+
+    // The fibers in the order of their cells (then ids): the segments the
+    // contact model gathers from them, and the mesh data their steps read,
+    // then lie in memory roughly as in space, so the pairs of neighbours
+    // and the cells of a region share the caches
+    List<label> order(n);
+    forAll(order, i)
+    {
+        order[i] = i;
+    }
+    auto key = [&](const label fi)
+    {
+        return
+            std::make_pair
+            (
+                fibers_[fi].location().celli, fibers_[fi].id()
+            );
+    };
+    std::sort
+    (
+        order.begin(), order.end(),
+        [&](const label i, const label j) { return key(i) < key(j); }
+    );
+    List<label> oldToNew(n);
+    forAll(order, i)
+    {
+        oldToNew[order[i]] = i;
+    }
+    fibers_.reorder(oldToNew);
+    if (step_.size())
+    {
+        const List<stepState> st(step_);
+        forAll(order, i)
+        {
+            step_[i] = st[order[i]];
+        }
+    }
 }
 
 
