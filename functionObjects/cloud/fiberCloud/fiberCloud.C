@@ -24,6 +24,7 @@ License
 #include <algorithm>
 #include <ctime>
 #include <utility>
+#include <vector>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -970,7 +971,7 @@ void Foam::fiberCloud::compact()
 
 void Foam::fiberCloud::sortByCell()
 {
-    // (Before the first step there are no states yet)
+    // Before the first step there are no step states yet
     const label n = fibers_.size();
     if (step_.size() && step_.size() != n)
     {
@@ -980,24 +981,26 @@ void Foam::fiberCloud::sortByCell()
     // The fibers in the order of their cells (then ids): the segments the
     // contact model gathers from them, and the mesh data their steps read,
     // then lie in memory roughly as in space, so the pairs of neighbours
-    // and the cells of a region share the caches
+    // and the cells of a region share the caches.  The keys are read once
+    // (each fiber is a pointer away); fibers already in order stay
+    std::vector<std::pair<label, label>> key(n);
+    forAll(fibers_, fi)
+    {
+        key[fi] = {fibers_[fi].location().celli, fibers_[fi].id()};
+    }
+    if (std::is_sorted(key.begin(), key.end()))
+    {
+        return;
+    }
     List<label> order(n);
     forAll(order, i)
     {
         order[i] = i;
     }
-    auto key = [&](const label fi)
-    {
-        return
-            std::make_pair
-            (
-                fibers_[fi].location().celli, fibers_[fi].id()
-            );
-    };
     std::sort
     (
         order.begin(), order.end(),
-        [&](const label i, const label j) { return key(i) < key(j); }
+        [&](const label i, const label j) { return key[i] < key[j]; }
     );
     List<label> oldToNew(n);
     forAll(order, i)
