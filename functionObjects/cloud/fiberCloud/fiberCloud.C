@@ -26,16 +26,6 @@ License
 #include <utility>
 #include <vector>
 
-// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
-
-const Foam::Enum<Foam::fiberCloud::wallRule>
-Foam::fiberCloud::wallRuleNames
-({
-    { wallRule::rebound, "rebound" },
-    { wallRule::deposit, "deposit" },
-});
-
-
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
@@ -156,7 +146,7 @@ Foam::fiberCloud::fiberCloud
     hydro_(hydrodynamicsFrom(dict, rhoFluid)),
     integrator_(fiberIntegrator::New(dict)),
     dispersion_(fiberDispersion::New(dict)),
-    wallRule_(wallRule::rebound),
+    rules_(),
     restitution_(dict.getOrDefault<scalar>("restitution", 1)),
     g_(g),
     control_(dict),
@@ -296,22 +286,20 @@ void Foam::fiberCloud::checkInteractionCost
 
 void Foam::fiberCloud::readWallRule(const dictionary& dict)
 {
-    const word rule(dict.getOrDefault<word>("wallInteraction", "rebound"));
-    if (!wallRuleNames.found(rule))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'wallInteraction': unknown rule '" << rule
-            << "'; valid rules: " << wallRuleNames.sortedToc()
-            << exit(FatalIOError);
-    }
-    wallRule_ = wallRuleNames[rule];
-    if (wallRule_ == wallRule::deposit)
+    rules_.reset
+    (
+        new wallRules
+        (
+            dict, mesh_.boundaryMesh(), tracker_.wallPatches(),
+            tracker_.outletPatches()
+        )
+    );
+    if (!rules_->any(wallRule::rebound))
     {
         keywordCheck::noEffect
         (
             dict, "restitution",
-            "with wallInteraction deposit (a fiber that reaches a wall"
-            " stays there)"
+            "where no wall rebounds fibers (wallInteraction)"
         );
     }
 
@@ -321,12 +309,11 @@ void Foam::fiberCloud::readWallRule(const dictionary& dict)
             << "Entry 'restitution' must lie in [0, 1], not " << restitution_
             << exit(FatalIOError);
     }
-    Info<< "    Wall interaction " << wallRuleNames[wallRule_];
-    if (wallRule_ == wallRule::rebound)
+    rules_->report(mesh_.boundaryMesh());
+    if (rules_->any(wallRule::rebound))
     {
-        Info<< ", restitution " << restitution_;
+        Info<< "    Restitution at the walls " << restitution_ << endl;
     }
-    Info<< endl;
 }
 
 
@@ -549,7 +536,12 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
             {
                 stepState& st = step_[fi];
                 st.engaged = engaged[fi];
-                if (st.st == status::gone || fixedSet_[fibers_[fi].setIndex()])
+                const fiber& f = fibers_[fi];
+                if
+                (
+                    st.st == status::gone || fixedSet_[f.setIndex()]
+                 || f.inMat()
+                )
                 {
                     continue;
                 }
@@ -673,7 +665,7 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
         {
             tLeft = tLeftNew[fi - nOld] > 1e-9*dt ? tLeftNew[fi - nOld] : 0;
         }
-        if (fixedSet_[fibers_[fi].setIndex()])
+        if (fixedSet_[fibers_[fi].setIndex()] || fibers_[fi].inMat())
         {
             tLeft = 0;
         }
@@ -728,7 +720,11 @@ Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
                 step_[fi].engaged
             };
         const fiber& f = fibers_[fi];
-        if (step_[fi].st == status::gone || !f.location().located())
+        if
+        (
+            step_[fi].st == status::gone || !f.location().located()
+         || f.inMat()
+        )
         {
             continue;
         }
@@ -805,7 +801,8 @@ Foam::List<Foam::fiberInteraction::role> Foam::fiberCloud::roles
         // window's intervals a fiber not engaged is not there either
         r[fi] =
             step_[fi].st == status::gone ? role::absent
-          : fixedSet_[fibers_[fi].setIndex()] ? role::fixed
+          : fixedSet_[fibers_[fi].setIndex()] || fibers_[fi].inMat()
+          ? role::fixed
           : window ? role::free
           : step_[fi].tLeft < tCommon_ - 1e-9*dt_ ? role::absent
           : inIntervals_ && !step_[fi].engaged ? role::absent
@@ -920,6 +917,7 @@ void Foam::fiberCloud::advance(const scalar tStopLeft)
 
 void Foam::fiberCloud::endStep(const scalar dt)
 {
+    joinAtRest();
     label nSubMax = 0;
     for (const stepState& st : step_)
     {

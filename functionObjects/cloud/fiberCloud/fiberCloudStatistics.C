@@ -28,18 +28,27 @@ Foam::fiberCloud::statistics Foam::fiberCloud::stats() const
     s.nInjected = counters_.nInjected();
     s.nEscaped = counters_.nEscaped();
     s.nDeposited = counters_.nDeposited();
-    s.nActive = fibers_.size();
+    s.nActive = 0;
+    s.nMat = 0;
     s.absP = Zero;
     s.pp = Zero;
 
+    // The active fibers' orientation (a mat's: its wire's measures)
     forAll(fibers_, fi)
     {
+        if (fibers_[fi].inMat())
+        {
+            ++s.nMat;
+            continue;
+        }
+        ++s.nActive;
         const vector p(fibers_[fi].orientation());
         s.absP += cmptMag(p);
         s.pp += sqr(p);
     }
 
     reduce(s.nActive, sumOp<label>());
+    reduce(s.nMat, sumOp<label>());
     reduce(s.absP, sumOp<vector>());
     reduce(s.pp, sumOp<symmTensor>());
 
@@ -63,16 +72,18 @@ Foam::List<Foam::fiberCloud::state> Foam::fiberCloud::gatherStates() const
 }
 
 
-Foam::List<Foam::FixedList<Foam::label, 4>>
+Foam::List<Foam::FixedList<Foam::label, 5>>
 Foam::fiberCloud::setCounts() const
 {
     labelList active(counters_.setNames().size(), 0);
+    labelList mat(active.size(), 0);
     for (const fiber& f : fibers_)
     {
-        ++active[f.setIndex()];
+        ++(f.inMat() ? mat : active)[f.setIndex()];
     }
     reduce(active, sumOp<labelList>());
-    return counters_.setCounts(active);
+    reduce(mat, sumOp<labelList>());
+    return counters_.setCounts(active, mat);
 }
 
 
@@ -251,6 +262,8 @@ Foam::scalarList Foam::fiberCloud::gatherSegments() const
                 }
             }
             rec[k++] = f.segmentDiameter(i);
+            rec[k++] = f.matPatch();
+            rec[k++] = f.inMat() ? f.landTime() : -1;
         }
     }
     Pstream::gatherList(all);

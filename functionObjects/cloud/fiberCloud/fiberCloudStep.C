@@ -170,15 +170,15 @@ bool Foam::fiberCloud::wallContact
 {
     fiber& f = fibers_[fi];
 
-    // Wall contact: the deepest segment beyond a wall
+    // Wall contact: the deepest segment beyond a wall (or beyond an
+    // outlet that holds a mat)
     label iWall = -1;
     forAll(s, i)
     {
-        if
-        (
+        const bool beyond =
             s[i].beyondWall()
-         && (iWall < 0 || s[i].dWall > s[iWall].dWall)
-        )
+         || (s[i].beyondOutlet() && rules_->isMat(s[i].patch));
+        if (beyond && (iWall < 0 || s[i].dWall > s[iWall].dWall))
         {
             iWall = i;
         }
@@ -187,9 +187,24 @@ bool Foam::fiberCloud::wallContact
     {
         return true;
     }
-    if (wallRule_ == wallRule::deposit && !s[iWall].mirror)
+    const wallRule rule =
+        s[iWall].mirror ? wallRule::rebound : rules_->ruleOf(s[iWall].patch);
+    if (rule == wallRule::deposit)
     {
         deposit(fi);
+        return false;
+    }
+    if (rule == wallRule::mat)
+    {
+        // The wire's plane: where the deepest segment's centre (at its
+        // offset from the fiber's) went through it
+        const tensor R(f.R());
+        const point c(f.position() + f.segmentOffset(R, iWall));
+        land
+        (
+            fi, s[iWall].patch, s[iWall].nWall,
+            c - s[iWall].dWall*s[iWall].nWall
+        );
         return false;
     }
     // Back inside, then the step goes on with these samples, taken on the
@@ -529,7 +544,16 @@ void Foam::fiberCloud::centreMoved
         }
         case fiberTracker::stop::outlet:
         {
-            escape(fi, mesh_.boundaryMesh().whichPatch(c.face));
+            const label patchi = mesh_.boundaryMesh().whichPatch(c.face);
+            if (rules_->isMat(patchi))
+            {
+                // Stopped by the wire the fluid passes
+                centreAtWall(fi, c, false);
+            }
+            else
+            {
+                escape(fi, patchi);
+            }
             break;
         }
     }
@@ -550,13 +574,22 @@ void Foam::fiberCloud::centreAtWall
     bool isMirror = mirror;
     for (label k = 0; k < 8; ++k)
     {
-        if (wallRule_ == wallRule::deposit && !isMirror)
+        const label patchi = mesh_.boundaryMesh().whichPatch(h.face);
+        const wallRule rule =
+            isMirror ? wallRule::rebound : rules_->ruleOf(patchi);
+        if (rule == wallRule::deposit)
         {
             deposit(fi);
             return;
         }
         const vector& Sf = mesh_.faceAreas()[h.face];
         const vector n(Sf/mag(Sf));
+        if (rule == wallRule::mat)
+        {
+            // Its location stopped where the centre went through the wire
+            land(fi, patchi, n, tracker_.position(f.location()), h.face);
+            return;
+        }
         const point onWall(tracker_.position(f.location()));
         const scalar e = isMirror ? 1 : restitution_;
         stepStats_.addRebound();
@@ -661,7 +694,7 @@ Foam::vector Foam::fiberCloud::rebound
 void Foam::fiberCloud::deposit(const label fi)
 {
     const fiber& f = fibers_[fi];
-    if (wallRule_ == wallRule::deposit)
+    if (rules_->any(wallRule::deposit))
     {
         events_.deposit(f);
     }

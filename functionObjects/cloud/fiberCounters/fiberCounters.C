@@ -99,18 +99,20 @@ void Foam::fiberCounters::endStep()
 }
 
 
-Foam::List<Foam::FixedList<Foam::label, 4>> Foam::fiberCounters::setCounts
+Foam::List<Foam::FixedList<Foam::label, 5>> Foam::fiberCounters::setCounts
 (
-    const labelUList& active
+    const labelUList& active,
+    const labelUList& mat
 ) const
 {
-    List<FixedList<label, 4>> c(setNames_.size());
+    List<FixedList<label, 5>> c(setNames_.size());
     forAll(c, k)
     {
         c[k][0] = nInjectedSet_[k];
         c[k][1] = active[k];
         c[k][2] = nEscapedSet_[k];
         c[k][3] = nDepositedSet_[k];
+        c[k][4] = mat[k];
     }
     return c;
 }

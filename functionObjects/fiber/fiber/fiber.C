@@ -123,6 +123,9 @@ Foam::fiber::fiber
     Q_(),
     vSeg_(),
     wSeg_(),
+    matPatch_(-1),
+    landTime_(0),
+    restSince_(-1),
     location_(),
     segmentLocations_(lengths.size())
 {
@@ -348,6 +351,30 @@ void Foam::fiber::move
 )
 {
     moveBy(dt*V, dt*omega, V, omega, dt);
+}
+
+
+void Foam::fiber::joinMat
+(
+    const label patchi,
+    const scalar t,
+    const vector& U
+)
+{
+    matPatch_ = patchi;
+    landTime_ = t;
+    restSince_ = -1;
+    setVelocity(U);
+    setOmega(Zero);
+    for (vector& wi : wSeg_)
+    {
+        wi = Zero;
+    }
+    for (vector& vi : vSeg_)
+    {
+        vi = U;
+    }
+    clearHistory();
 }
 
 

@@ -50,6 +50,9 @@ Foam::fiber::fiber(Istream& is)
     Q_(),
     vSeg_(),
     wSeg_(),
+    matPatch_(-1),
+    landTime_(0),
+    restSince_(-1),
     location_(),
     segmentLocations_(l_.size())
 {
@@ -57,6 +60,7 @@ Foam::fiber::fiber(Istream& is)
     {
         is >> z0Rest_ >> Q_ >> vSeg_ >> wSeg_;
     }
+    is >> matPatch_ >> landTime_ >> restSince_;
     is.check(FUNCTION_NAME);
     calcProperties();
 }
@@ -97,6 +101,8 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
         os  << token::SPACE << f.z0Rest_ << token::SPACE << f.Q_
             << token::SPACE << f.vSeg_ << token::SPACE << f.wSeg_;
     }
+    os  << token::SPACE << f.matPatch_ << token::SPACE << f.landTime_
+        << token::SPACE << f.restSince_;
 
     os.check(FUNCTION_NAME);
     return os;

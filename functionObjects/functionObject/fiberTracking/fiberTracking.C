@@ -526,7 +526,12 @@ void Foam::functionObjects::fiberTracking::progress(const bool last)
         << " of " << duration_ << " s ("
         << label(100*fiberTime_/duration_ + 0.5) << " %), active "
         << s.nActive << ", escaped " << s.nEscaped << ", deposited "
-        << s.nDeposited << "; " << cpuFibers_ << " s of CPU so far, "
+        << s.nDeposited;
+    if (cloud_->rules().wires().size())
+    {
+        Info<< ", in the mat " << s.nMat;
+    }
+    Info<< "; " << cpuFibers_ << " s of CPU so far, "
         << (fiberTime_ > 0 ? cpuFibers_/fiberTime_ : 0)
         << " s of CPU per second of fiber time" << endl;
     if (!last)
@@ -622,13 +627,17 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
         {
             os << tab << s.pp[k];
         }
+        if (cloud_->rules().wires().size())
+        {
+            os << tab << s.nMat;
+        }
         os << endl;
     }
 
     writeCounts(s);
 
     // Deposits since the last call
-    if (cloud_->wallInteraction() == fiberCloud::wallRule::deposit)
+    if (cloud_->rules().any(wallRules::rule::deposit))
     {
         const List<fiberCloud::state> dep(cloud_->gatherDeposits());
         if (Pstream::master() && depositFilePtr_.valid())
@@ -660,10 +669,11 @@ void Foam::functionObjects::fiberTracking::writeCounts
     // Per set, when there are two or more (collective)
     if (cloud_->setNames().size() > 1)
     {
-        const List<FixedList<label, 4>> c(cloud_->setCounts());
+        const List<FixedList<label, 5>> c(cloud_->setCounts());
+        const label nCols = cloud_->rules().wires().size() ? 5 : 4;
         forAll(c, k)
         {
-            if (c[k][0] != c[k][1] + c[k][2] + c[k][3])
+            if (c[k][0] != c[k][1] + c[k][2] + c[k][3] + c[k][4])
             {
                 FatalErrorInFunction
                     << "Fiber count of set " << cloud_->setNames()[k]
@@ -674,11 +684,11 @@ void Foam::functionObjects::fiberTracking::writeCounts
         {
             OFstream& os = setFilePtr_();
             os  << fiberTime_;
-            for (const FixedList<label, 4>& ck : c)
+            for (const FixedList<label, 5>& ck : c)
             {
-                for (const label n : ck)
+                for (label j = 0; j < nCols; ++j)
                 {
-                    os << tab << n;
+                    os << tab << ck[j];
                 }
             }
             os << endl;
@@ -698,14 +708,15 @@ void Foam::functionObjects::fiberTracking::writeCounts
 
     if
     (
-        s.nInjected != s.nActive + s.nEscaped + s.nDeposited
+        s.nInjected != s.nActive + s.nEscaped + s.nDeposited + s.nMat
      || s.nEscaped != sum(cloud_->nEscapedOutlet())
     )
     {
         FatalErrorInFunction
             << "Fiber count broken: injected " << s.nInjected
             << " != active " << s.nActive << " + escaped " << s.nEscaped
-            << " + deposited " << s.nDeposited << ", or escaped != "
+            << " + deposited " << s.nDeposited << " + in the mat "
+            << s.nMat << ", or escaped != "
             << cloud_->nEscapedOutlet() << " summed over the outlets"
             << exit(FatalError);
     }
@@ -871,7 +882,8 @@ void Foam::functionObjects::fiberTracking::writeEvents
     OFstream& os
 ) const
 {
-    static const char* kinds[3] = {"injected", "escaped", "deposited"};
+    static const char* kinds[4] =
+        {"injected", "escaped", "deposited", "mat"};
     const label m = fiberCloud::eventSize;
     const wordList& sets = cloud_->setNames();
     for (label k = 0; k < ev.size()/m; ++k)
@@ -1353,6 +1365,7 @@ void Foam::functionObjects::fiberTracking::createFiles
         os,
         "Time nInjected nActive nEscaped nDeposited absP1 absP2 absP3"
         " pp_xx pp_xy pp_xz pp_yy pp_yz pp_zz"
+      + string(cloud_->rules().wires().size() ? " nMat" : "")
     );
     os << endl;
 
@@ -1370,7 +1383,7 @@ void Foam::functionObjects::fiberTracking::createFiles
     writeCommented(stateFilePtr_(), stateColumns);
     stateFilePtr_() << endl;
 
-    if (cloud_->wallInteraction() == fiberCloud::wallRule::deposit)
+    if (cloud_->rules().any(wallRules::rule::deposit))
     {
         depositFilePtr_ = newFileAtStart("fiberDeposits");
         writeHeader(depositFilePtr_(), "Deposited fibers (fiberTracking)");
@@ -1400,6 +1413,10 @@ void Foam::functionObjects::fiberTracking::createFiles
                 columns += " " + set + "_" + c;
             }
             columns += " " + set + "_deposited";
+            if (cloud_->rules().wires().size())
+            {
+                columns += " " + set + "_mat";
+            }
         }
         writeCommented(os, columns);
         os << endl;

@@ -140,6 +140,7 @@ Foam::fiberInteractions::contact::contact
     rec_(),
     pairs_(),
     touching_(),
+    onFixed_(),
     nCollisions_(0),
     windows_(*this),
     tcWindow_(-1),
@@ -607,6 +608,41 @@ void Foam::fiberInteractions::contact::count
 }
 
 
+void Foam::fiberInteractions::contact::recordFixedTouches
+(
+    const UList<segment>& segs,
+    const DynamicList<FixedList<label, 2>>& touching
+)
+{
+    onFixed_.clear();
+    if (touching.empty())
+    {
+        return;
+    }
+    labelHashSet partners(2*touching.size());
+    for (const FixedList<label, 2>& t : touching)
+    {
+        partners.insert(t[1]);
+    }
+    Map<vector> fixedV;
+    for (const segment& s : segs)
+    {
+        if (!(s.m > 0) && partners.found(s.fiber))
+        {
+            fixedV.set(s.fiber, s.v);
+        }
+    }
+    for (const FixedList<label, 2>& t : touching)
+    {
+        const auto it = fixedV.cfind(t[1]);
+        if (it.found())
+        {
+            onFixed_.set(t[0], *it);
+        }
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::fiberInteractions::contact::contactTime
@@ -1017,6 +1053,7 @@ void Foam::fiberInteractions::contact::interact
         }
     }
     count(touching, close);
+    recordFixedTouches(segs, touching);
 
     // The buffers back, for the next interval's search (their capacity)
     segs.clear();

@@ -171,6 +171,21 @@ void Foam::fiberVtkWriter::write
         doubles("orientation", rec, n, 16, 3),
         doubles("diameter", rec, n, 19, 1)
     });
+    bool anyMat = false;
+    for (label i = 0; i < n && !anyMat; ++i)
+    {
+        anyMat = rec[i*recordSize + 20] >= 0;
+    }
+    if (anyMat)
+    {
+        vtkArray mat{"Int64", "matPatch", 1, std::string()};
+        for (label i = 0; i < n; ++i)
+        {
+            append<int64_t>(mat.bytes, int64_t(rec[i*recordSize + 20]));
+        }
+        cellData.append(mat);
+        cellData.append(doubles("landTime", rec, n, 21, 1));
+    }
     if (flocOf)
     {
         vtkArray flocs{"Int64", "flocId", 1, std::string()};

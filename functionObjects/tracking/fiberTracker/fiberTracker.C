@@ -453,6 +453,20 @@ Foam::labelList Foam::fiberTracker::outletPatches() const
 }
 
 
+Foam::labelList Foam::fiberTracker::wallPatches() const
+{
+    DynamicList<label> w;
+    forAll(kind_, patchi)
+    {
+        if (kind_[patchi] == patchKind::wall)
+        {
+            w.append(patchi);
+        }
+    }
+    return labelList(std::move(w));
+}
+
+
 Foam::point Foam::fiberTracker::position(const trackedPoint& tp) const
 {
     if (cached(tp))

@@ -132,6 +132,8 @@ void Foam::fluidSampler::interpolate
     s.nWall = Zero;
     s.dWall = 0;
     s.mirror = false;
+    s.patch = -1;
+    s.outlet = false;
 }
 
 
@@ -194,18 +196,23 @@ bool Foam::fluidSampler::sample
 
     interpolate(tp, s);
 
-    if (h.where == stop::wall || h.where == stop::symmetry)
+    if
+    (
+        h.where == stop::wall || h.where == stop::symmetry
+     || h.where == stop::outlet
+    )
     {
         const vector& Sf = mesh_.faceAreas()[h.face];
         s.inside = false;
         s.nWall = Sf/mag(Sf);
         s.dWall = max(h.left & s.nWall, scalar(0));
         s.mirror = (h.where == stop::symmetry);
-    }
-    else if (h.where == stop::outlet)
-    {
-        s.inside = false;
-        ++nOutside_;
+        s.patch = mesh_.boundaryMesh().whichPatch(h.face);
+        s.outlet = (h.where == stop::outlet);
+        if (s.outlet)
+        {
+            ++nOutside_;
+        }
     }
 
     toStartFrame(h, s);
