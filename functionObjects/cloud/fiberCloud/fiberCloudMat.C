@@ -122,11 +122,13 @@ Foam::scalar Foam::fiberCloud::restSpeed
 
 void Foam::fiberCloud::joinAtRest()
 {
-    // A free fiber touching a fixed one (a mat's, or a fixed set's) whose
-    // points all move slower than the wire's rest speed relative to it
-    // has been at rest since the first step end it was found so; it
-    // joins the mat at a step end where that time reaches the wire's
-    // restTime, and at its second step end at rest at the least
+    // A free fiber touching a fixed one (a mat's, or a fixed set's) comes
+    // to rest there at a step end; it joins the mat at a later step end,
+    // still touching, where it has been at rest for the wire's restTime:
+    // its ends have moved, since, less than the rest speed relative to
+    // the wire times the time.  Where they moved more, it comes to rest
+    // anew there.  A mean over the time, not the speed of the moment: a
+    // fiber rocking in place on a pile is at rest
     if (rules_->wires().empty() || !interactions_->active())
     {
         return;
@@ -145,48 +147,54 @@ void Foam::fiberCloud::joinAtRest()
             f.restSince() = -1;
             continue;
         }
-
-        // The wire whose velocity the partner has (the first), else the
-        // first wire
-        const List<wallRules::wire>& wires = rules_->wires();
-        label k = 0;
-        forAll(wires, j)
-        {
-            if (mag(wires[j].U - Uw) <= 1e-9*(mag(Uw) + SMALL))
-            {
-                k = j;
-                break;
-            }
-        }
-        scalar u = 0;
-        const tensor R(f.R());
-        for (label i = 0; i < f.nSegments(); ++i)
-        {
-            const vector& w = f.flexible() ? f.segmentOmega(i) : f.omega();
-            u =
-                max
-                (
-                    u,
-                    mag(f.segmentVelocity(R, i) - wires[k].U)
-                  + 0.5*mag(w)*f.segmentLength(i)
-                );
-        }
-        if (u >= restSpeed(fi, k))
-        {
-            f.restSince() = -1;
-            continue;
-        }
-        if (f.restSince() < 0)
+        const label k = wireOfPartner(Uw);
+        const wallRules::wire& w = rules_->wires()[k];
+        const FixedList<point, 2> e(f.ends());
+        const scalar T = tEnd_ - f.restSince();
+        if (f.restSince() < 0 || !(T > 0))
         {
             f.restSince() = tEnd_;
+            f.restEnds() = e;
             continue;
         }
-        if (tEnd_ - f.restSince() >= wires[k].restTime*(1 - 1e-9))
+
+        // The ends' largest displacement relative to the wire
+        scalar moved = 0;
+        forAll(e, j)
+        {
+            moved = max(moved, mag(e[j] - f.restEnds()[j] - w.U*T));
+        }
+        const scalar vRest = restSpeed(fi, k);
+        if (moved > vRest*T)
+        {
+            f.restSince() = tEnd_;
+            f.restEnds() = e;
+            continue;
+        }
+        const scalar tRest =
+            w.restTime > 0 ? w.restTime
+          : 0.1*f.minDiameter()/max(vRest, VSMALL);
+        if (T >= tRest*(1 - 1e-9))
         {
             step_[fi].tLeft = 0;
-            toMat(fi, wires[k].patch);
+            toMat(fi, w.patch);
         }
     }
+}
+
+
+Foam::label Foam::fiberCloud::wireOfPartner(const vector& U) const
+{
+    // The wire whose velocity the partner has (the first), else the first
+    const List<wallRules::wire>& wires = rules_->wires();
+    forAll(wires, j)
+    {
+        if (mag(wires[j].U - U) <= 1e-9*(mag(U) + SMALL))
+        {
+            return j;
+        }
+    }
+    return 0;
 }
 
 

@@ -221,6 +221,52 @@ Foam::scalarList Foam::fiberCloud::costliest() const
 }
 
 
+Foam::scalarList Foam::fiberCloud::gatherMatSegments() const
+{
+    DynamicList<scalar> rec;
+    for (const fiber& f : fibers_)
+    {
+        if (!f.inMat())
+        {
+            continue;
+        }
+        const tensor R(f.R());
+        const vector p(f.orientation());
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            const vector c(f.position() + f.segmentOffset(R, i));
+            const vector z(f.segmentDirection(R, i));
+            for
+            (
+                const scalar x
+              : {
+                    scalar(f.matPatch()), scalar(f.id()), c.x(), c.y(),
+                    c.z(), z.x(), z.y(), z.z(), f.segmentLength(i),
+                    f.segmentDiameter(i), f.segmentMass(i), p.x(), p.y(),
+                    p.z()
+                }
+            )
+            {
+                rec.append(x);
+            }
+        }
+    }
+    List<scalarList> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = std::move(rec);
+    Pstream::gatherList(all);
+    if (!Pstream::master())
+    {
+        return scalarList();
+    }
+    DynamicList<scalar> out;
+    for (const scalarList& r : all)
+    {
+        out.append(r);
+    }
+    return scalarList(std::move(out));
+}
+
+
 Foam::scalarList Foam::fiberCloud::gatherSegments() const
 {
     const label m = fiberVtkWriter::recordSize;

@@ -53,7 +53,7 @@ Foam::wallRules::rule Foam::wallRules::readRule
             << ruleNames.sortedToc() << exit(FatalIOError);
     }
     const rule r = ruleNames[name];
-    w = wire{-1, Zero, -1, 0.01, 0};
+    w = wire{-1, Zero, -1, 0.01, 0, Zero, 20};
     if (!sub)
     {
         return r;
@@ -61,7 +61,8 @@ Foam::wallRules::rule Foam::wallRules::readRule
     const wordList known
     (
         r == rule::mat
-      ? wordList({"type", "restSpeed", "restFraction", "restTime"})
+      ? wordList({"type", "restSpeed", "restFraction", "restTime",
+            "machineDirection", "randomSheets"})
       : wordList({"type"})
     );
     for (const entry& se : *sub)
@@ -82,6 +83,19 @@ Foam::wallRules::rule Foam::wallRules::readRule
           : -1;
         w.restFraction = keywordCheck::positive(md, "restFraction", 0.01);
         w.restTime = md.getOrDefault<scalar>("restTime", 0);
+        w.md = md.getOrDefault<vector>("machineDirection", Zero);
+        if (md.found("machineDirection"))
+        {
+            w.md = keywordCheck::unitVector(md, "machineDirection");
+        }
+        w.nRandom = md.getOrDefault<label>("randomSheets", 20);
+        if (w.nRandom < 2)
+        {
+            FatalIOErrorInFunction(md)
+                << "Entry 'randomSheets' of '" << key << "' must be at"
+                << " least 2 (the reference's spread), not " << w.nRandom
+                << exit(FatalIOError);
+        }
         if (w.restTime < 0)
         {
             FatalIOErrorInFunction(md)
@@ -135,7 +149,7 @@ Foam::wallRules::wallRules
         applies_[patchi] = true;
     }
     List<wire> wireOfPatch(pbm.size());
-    wire w{-1, Zero, -1, 0.01, 0};
+    wire w{-1, Zero, -1, 0.01, 0, Zero, 20};
     const dictionary* rulesPtr = dict.findDict("wallInteraction");
     if (!rulesPtr)
     {

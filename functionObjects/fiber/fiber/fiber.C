@@ -126,6 +126,7 @@ Foam::fiber::fiber
     matPatch_(-1),
     landTime_(0),
     restSince_(-1),
+    restEnds_(point::zero),
     location_(),
     segmentLocations_(lengths.size())
 {
@@ -351,6 +352,21 @@ void Foam::fiber::move
 )
 {
     moveBy(dt*V, dt*omega, V, omega, dt);
+}
+
+
+Foam::FixedList<Foam::point, 2> Foam::fiber::ends() const
+{
+    const tensor R(this->R());
+    const label n = nSegments() - 1;
+    return
+        FixedList<point, 2>
+        {
+            x_ + segmentOffset(R, 0)
+          - 0.5*segmentLength(0)*segmentDirection(R, 0),
+            x_ + segmentOffset(R, n)
+          + 0.5*segmentLength(n)*segmentDirection(R, n)
+        };
 }
 
 

@@ -53,6 +53,7 @@ Foam::fiber::fiber(Istream& is)
     matPatch_(-1),
     landTime_(0),
     restSince_(-1),
+    restEnds_(point::zero),
     location_(),
     segmentLocations_(l_.size())
 {
@@ -60,7 +61,7 @@ Foam::fiber::fiber(Istream& is)
     {
         is >> z0Rest_ >> Q_ >> vSeg_ >> wSeg_;
     }
-    is >> matPatch_ >> landTime_ >> restSince_;
+    is >> matPatch_ >> landTime_ >> restSince_ >> restEnds_;
     is.check(FUNCTION_NAME);
     calcProperties();
 }
@@ -102,7 +103,7 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const fiber& f)
             << token::SPACE << f.vSeg_ << token::SPACE << f.wSeg_;
     }
     os  << token::SPACE << f.matPatch_ << token::SPACE << f.landTime_
-        << token::SPACE << f.restSince_;
+        << token::SPACE << f.restSince_ << token::SPACE << f.restEnds_;
 
     os.check(FUNCTION_NAME);
     return os;

@@ -588,6 +588,23 @@ void Foam::functionObjects::fiberTracking::reportCost() const
 }
 
 
+void Foam::functionObjects::fiberTracking::writeSheets(const word& tag)
+{
+    if (!sheetWriter_.valid())
+    {
+        return;
+    }
+    const scalarList records(cloud_->gatherMatSegments());
+    if (Pstream::master() && sheetFilePtr_.valid())
+    {
+        sheetWriter_->write
+        (
+            records, fiberTime_, startTimeDir()/"mat"/tag, sheetFilePtr_()
+        );
+    }
+}
+
+
 void Foam::functionObjects::fiberTracking::writeVtk(const word& tag)
 {
     // Collective: every processor sends its segments if the master writes
@@ -1041,6 +1058,10 @@ bool Foam::functionObjects::fiberTracking::read(const dictionary& dict)
         checkFields(dict);
     }
     readCellFields(dict);
+    if (cloud_->rules().wires().size())
+    {
+        sheetWriter_.reset(new matSheetWriter(mesh_, cloud_->rules()));
+    }
 
     if (Pstream::master() && writeToFile())
     {
@@ -1483,6 +1504,15 @@ void Foam::functionObjects::fiberTracking::createCloudFiles
     }
 
     createContactFiles();
+
+    if (sheetWriter_.valid())
+    {
+        sheetFilePtr_ = newFileAtStart("matSheet");
+        OFstream& os = sheetFilePtr_();
+        writeHeader(os, "Sheets of the mats on the wires (fiberTracking)");
+        writeCommented(os, matSheetWriter::columns());
+        os << endl;
+    }
 }
 
 
@@ -1563,6 +1593,7 @@ void Foam::functionObjects::fiberTracking::executeLive()
     {
         writeRestart();
         writeVtk(time_.timeName());
+        writeSheets(time_.timeName());
         if (cellFields_.valid())
         {
             cellFields_->write();
@@ -1604,6 +1635,7 @@ void Foam::functionObjects::fiberTracking::writeStates(const word& tag)
         writeStates(st, stateFilePtr_());
     }
     writeVtk(tag);
+    writeSheets(tag);
 }
 
 
