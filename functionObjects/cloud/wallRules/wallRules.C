@@ -129,6 +129,45 @@ Foam::labelList Foam::wallRules::patchesOf
 }
 
 
+void Foam::wallRules::applyEntry
+(
+    const dictionary& rules,
+    const entry& e,
+    const polyBoundaryMesh& pbm,
+    const labelUList& walls,
+    const labelUList& outlets,
+    List<wire>& wireOfPatch
+)
+{
+    const keyType& key = e.keyword();
+    wire w;
+    const rule r = readRule(rules, e, w);
+    for (const label patchi : patchesOf(rules, key, pbm))
+    {
+        const bool isWall = walls.found(patchi);
+        if (!isWall && !outlets.found(patchi))
+        {
+            FatalIOErrorInFunction(rules)
+                << "Entry 'wallInteraction': patch " << pbm[patchi].name()
+                << " (of '" << key << "') is " << pbm[patchi].type()
+                << ": fibers pass it or are mirrored there, no rule"
+                << " applies" << exit(FatalIOError);
+        }
+        if (!isWall && r != rule::mat)
+        {
+            FatalIOErrorInFunction(rules)
+                << "Entry 'wallInteraction': patch " << pbm[patchi].name()
+                << " (of '" << key << "') is an outlet ("
+                << pbm[patchi].type() << "): fibers leave through it, or"
+                << " stop there with rule mat; not " << ruleNames[r]
+                << exit(FatalIOError);
+        }
+        rule_[patchi] = r;
+        wireOfPatch[patchi] = w;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::wallRules::wallRules
@@ -189,35 +228,9 @@ Foam::wallRules::wallRules
             {
                 const keyType& key = e.keyword();
                 const bool isName = pbm.findPatchID(key) >= 0;
-                if (key == "default" || isName != literal)
+                if (key != "default" && isName == literal)
                 {
-                    continue;
-                }
-                const rule r = readRule(rules, e, w);
-                for (const label patchi : patchesOf(rules, key, pbm))
-                {
-                    const bool isWall = walls.found(patchi);
-                    if (!isWall && !outlets.found(patchi))
-                    {
-                        FatalIOErrorInFunction(rules)
-                            << "Entry 'wallInteraction': patch "
-                            << pbm[patchi].name() << " (of '" << key
-                            << "') is " << pbm[patchi].type()
-                            << ": fibers pass it or are mirrored there,"
-                            << " no rule applies" << exit(FatalIOError);
-                    }
-                    if (!isWall && r != rule::mat)
-                    {
-                        FatalIOErrorInFunction(rules)
-                            << "Entry 'wallInteraction': patch "
-                            << pbm[patchi].name() << " (of '" << key
-                            << "') is an outlet (" << pbm[patchi].type()
-                            << "): fibers leave through it, or stop there"
-                            << " with rule mat; not " << ruleNames[r]
-                            << exit(FatalIOError);
-                    }
-                    rule_[patchi] = r;
-                    wireOfPatch[patchi] = w;
+                    applyEntry(rules, e, pbm, walls, outlets, wireOfPatch);
                 }
             }
         }

@@ -66,7 +66,12 @@ void Foam::fiberInteractions::segmentPairSearch::build
         ch_[e] = halfExtent(segs[p]);
         cv_[e] = centreVelocity(segs[p]);
         cf_[e] = segs[p].fiber;
-        cl_[e] = char((segs[p].local >= 0) | (segs[p].flexible << 1));
+        cl_[e] =
+            char
+            (
+                (segs[p].local >= 0) | (segs[p].flexible << 1)
+              | (!(segs[p].m > 0) << 2)
+            );
     }
 }
 
@@ -88,8 +93,10 @@ inline void Foam::fiberInteractions::segmentPairSearch::densePair
     {
         return;
     }
+    // Neither local, or both fixed (a mat's, a fixed set's: they never
+    // act on each other): no pair
     const bool lp = cl_[e] & 1;
-    if (!A.local && !lp)
+    if ((!A.local && !lp) || (A.fixed && (cl_[e] & 4)))
     {
         return;
     }
@@ -176,8 +183,8 @@ void Foam::fiberInteractions::segmentPairSearch::dense
         const int64_t k = ck_[a];
         const denseEntry A
         {
-            q, cf_[a], bool(cl_[a] & 1), bool(cl_[a] & 2), cc_[a], ce_[a],
-            ch_[a], cv_[a]
+            q, cf_[a], bool(cl_[a] & 1), bool(cl_[a] & 2), bool(cl_[a] & 4),
+            cc_[a], ce_[a], ch_[a], cv_[a]
         };
 
         // The rest of its own cell, the next cell of its row, the next
@@ -223,6 +230,7 @@ inline void Foam::fiberInteractions::segmentPairSearch::sparsePair
     if
     (
         (P.fiber != Q.fiber || selfPair(Q, P))
+     && (P.m > 0 || Q.m > 0)
      && d2 <= sqr(within)
     )
     {
