@@ -120,64 +120,169 @@ Foam::scalar Foam::fiberCloud::restSpeed
 }
 
 
+bool Foam::fiberCloud::atRest(const label fi, const label k)
+{
+    // Its rest: since the first step end it was found in contact, where
+    // its ends have moved, relative to the wire, less than the rest speed
+    // times the time; over the wire's restTime it is ready to join
+    fiber& f = fibers_[fi];
+    const wallRules::wire& w = rules_->wires()[k];
+    const FixedList<point, 2> e(f.ends());
+    const scalar T = tEnd_ - f.restSince();
+    if (f.restSince() < 0 || !(T > 0))
+    {
+        f.restSince() = tEnd_;
+        f.restEnds() = e;
+        return false;
+    }
+    scalar moved = 0;
+    forAll(e, j)
+    {
+        moved = max(moved, mag(e[j] - f.restEnds()[j] - w.U*T));
+    }
+    const scalar vRest = restSpeed(fi, k);
+    if (moved > vRest*T)
+    {
+        f.restSince() = tEnd_;
+        f.restEnds() = e;
+        return false;
+    }
+    const scalar tRest =
+        w.restTime > 0 ? w.restTime
+      : 0.1*f.minDiameter()/max(vRest, VSMALL);
+    return T >= tRest*(1 - 1e-9);
+}
+
+
 void Foam::fiberCloud::joinAtRest()
 {
-    // A free fiber touching a fixed one (a mat's, or a fixed set's) comes
-    // to rest there at a step end; it joins the mat at a later step end,
-    // still touching, where it has been at rest for the wire's restTime:
-    // its ends have moved, since, less than the rest speed relative to
-    // the wire times the time.  Where they moved more, it comes to rest
-    // anew there.  A mean over the time, not the speed of the moment: a
-    // fiber rocking in place on a pile is at rest
+    // The fibers in contact come to rest (atRest); of those ready, the
+    // ones that touch a fixed fiber join the mat, and so do the ready
+    // ones that touch a joining one, through the pairs of the last
+    // interval (a pile at rest on the mat joins at one step end).  Every
+    // processor has every ready fiber and pair, and finds the same ones
     if (rules_->wires().empty() || !interactions_->active())
     {
         return;
     }
+    List<labelList> pairsOf(Pstream::nProcs());
+    {
+        const List<FixedList<label, 2>> p(interactions_->touchingPairs());
+        labelList& mine = pairsOf[Pstream::myProcNo()];
+        mine.setSize(2*p.size());
+        forAll(p, k)
+        {
+            mine[2*k] = p[k][0];
+            mine[2*k + 1] = p[k][1];
+        }
+    }
+    Pstream::gatherList(pairsOf);
+    Pstream::scatterList(pairsOf);
+    labelHashSet inPair;
+    for (const labelList& p : pairsOf)
+    {
+        for (const label id : p)
+        {
+            inPair.insert(id);
+        }
+    }
+
+    // This processor's fibers ready to join, and those that touch a
+    // fixed fiber (with the wire of that fiber's velocity)
+    List<labelList> readyOf(Pstream::nProcs());
+    DynamicList<label> ready;
+    Map<label> local;
     forAll(fibers_, fi)
     {
         fiber& f = fibers_[fi];
         vector Uw(Zero);
+        const bool onFixed =
+            step_[fi].st != status::gone && !f.inMat()
+         && !fixedSet_[f.setIndex()]
+         && interactions_->touchesFixed(f.id(), Uw);
         if
         (
             step_[fi].st == status::gone || f.inMat()
-         || fixedSet_[f.setIndex()]
-         || !interactions_->touchesFixed(f.id(), Uw)
+         || fixedSet_[f.setIndex()] || (!onFixed && !inPair.found(f.id()))
         )
         {
             f.restSince() = -1;
             continue;
         }
-        const label k = wireOfPartner(Uw);
-        const wallRules::wire& w = rules_->wires()[k];
-        const FixedList<point, 2> e(f.ends());
-        const scalar T = tEnd_ - f.restSince();
-        if (f.restSince() < 0 || !(T > 0))
+        const label k = onFixed ? wireOfPartner(Uw) : 0;
+        if (atRest(fi, k))
         {
-            f.restSince() = tEnd_;
-            f.restEnds() = e;
-            continue;
+            // id, and its wire if it touches a fixed fiber (-1: not)
+            ready.append(f.id());
+            ready.append(onFixed ? k : -1);
+            local.insert(f.id(), fi);
         }
+    }
+    readyOf[Pstream::myProcNo()] = std::move(ready);
+    Pstream::gatherList(readyOf);
+    Pstream::scatterList(readyOf);
+    joinPiles(pairsOf, readyOf, local);
+}
 
-        // The ends' largest displacement relative to the wire
-        scalar moved = 0;
-        forAll(e, j)
+
+void Foam::fiberCloud::joinPiles
+(
+    const List<labelList>& pairsOf,
+    const List<labelList>& readyOf,
+    const Map<label>& local
+)
+{
+    // Breadth first from the ready fibers on a fixed one through the
+    // pairs of ready fibers; each joins its parent's wire
+    Map<label> wireOf;
+    DynamicList<label> front;
+    Map<DynamicList<label>> next;
+    labelHashSet isReady;
+    for (const labelList& r : readyOf)
+    {
+        for (label k = 0; k < r.size(); k += 2)
         {
-            moved = max(moved, mag(e[j] - f.restEnds()[j] - w.U*T));
+            isReady.insert(r[k]);
+            if (r[k + 1] >= 0)
+            {
+                wireOf.insert(r[k], r[k + 1]);
+                front.append(r[k]);
+            }
         }
-        const scalar vRest = restSpeed(fi, k);
-        if (moved > vRest*T)
+    }
+    for (const labelList& p : pairsOf)
+    {
+        for (label k = 0; k < p.size(); k += 2)
         {
-            f.restSince() = tEnd_;
-            f.restEnds() = e;
+            if (isReady.found(p[k]) && isReady.found(p[k + 1]))
+            {
+                next(p[k]).append(p[k + 1]);
+                next(p[k + 1]).append(p[k]);
+            }
+        }
+    }
+    for (label q = 0; q < front.size(); ++q)
+    {
+        const auto it = next.cfind(front[q]);
+        if (!it.found())
+        {
             continue;
         }
-        const scalar tRest =
-            w.restTime > 0 ? w.restTime
-          : 0.1*f.minDiameter()/max(vRest, VSMALL);
-        if (T >= tRest*(1 - 1e-9))
+        for (const label id : *it)
         {
-            step_[fi].tLeft = 0;
-            toMat(fi, w.patch);
+            if (wireOf.insert(id, wireOf[front[q]]))
+            {
+                front.append(id);
+            }
+        }
+    }
+    forAllConstIters(wireOf, it)
+    {
+        const auto fi = local.cfind(it.key());
+        if (fi.found())
+        {
+            step_[*fi].tLeft = 0;
+            toMat(*fi, rules_->wires()[it.val()].patch);
         }
     }
 }
