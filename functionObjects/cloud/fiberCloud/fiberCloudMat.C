@@ -15,6 +15,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fiberCloud.H"
+#include "openfoamCompat.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -176,8 +177,7 @@ void Foam::fiberCloud::joinAtRest()
             mine[2*k + 1] = p[k][1];
         }
     }
-    Pstream::gatherList(pairsOf);
-    Pstream::scatterList(pairsOf);
+    fiberCompat::allGatherList(pairsOf);
     labelHashSet inPair;
     for (const labelList& p : pairsOf)
     {
@@ -219,8 +219,7 @@ void Foam::fiberCloud::joinAtRest()
         }
     }
     readyOf[Pstream::myProcNo()] = std::move(ready);
-    Pstream::gatherList(readyOf);
-    Pstream::scatterList(readyOf);
+    fiberCompat::allGatherList(readyOf);
     joinPiles(pairsOf, readyOf, local);
 }
 
