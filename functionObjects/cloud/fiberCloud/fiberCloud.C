@@ -604,6 +604,13 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
                 interact(tEnd_ - tl, tl - tStopLeft_);
             }
             advance(tStopLeft_);
+            if (rules_->anyMoving())
+            {
+                // The belts' mats to the interval's end (those a belt took
+                // to another processor sent on)
+                carry(tEnd_ - tl, tEnd_ - tStopLeft_);
+                advance(tStopLeft_);
+            }
             if (active)
             {
                 tCommon_ = tStopLeft_;
@@ -720,6 +727,11 @@ Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
                 step_[fi].engaged
             };
         const fiber& f = fibers_[fi];
+        if (f.inMat())
+        {
+            // On a belt: moving at its velocity
+            fw.U = f.velocity();
+        }
         if
         (
             step_[fi].st == status::gone || !f.location().located()

@@ -287,6 +287,39 @@ void Foam::fiberCloud::joinPiles
 }
 
 
+void Foam::fiberCloud::carry(const scalar ta, const scalar tb)
+{
+    forAll(fibers_, fi)
+    {
+        // From ta, or from its landing if later (in the interval, or in
+        // the window a fiber ran through on its own before it)
+        fiber& f = fibers_[fi];
+        if (!f.inMat() || step_[fi].st == status::gone)
+        {
+            continue;
+        }
+        const vector& U =
+            rules_->wires()[rules_->wireOf(f.matPatch())].U;
+        const scalar h = tb - max(ta, f.landTime());
+        if (magSqr(U) > 0 && h > 0)
+        {
+            f.translate(h*U);
+            f.clearSegmentLocations();
+            centreMoved(fi, tracker_.track(f.location(), h*U));
+        }
+    }
+}
+
+
+void Foam::fiberCloud::carriedOut(const label fi, const label patchi)
+{
+    const fiber& f = fibers_[fi];
+    step_[fi].st = status::gone;
+    counters_.carried(f.setIndex());
+    events_.record(f, tEnd_ - tStopLeft_, fiberEventLog::carried, patchi);
+}
+
+
 Foam::label Foam::fiberCloud::wireOfPartner(const vector& U) const
 {
     // The wire whose velocity the partner has (the first), else the first

@@ -30,6 +30,7 @@ Foam::fiberCloud::statistics Foam::fiberCloud::stats() const
     s.nDeposited = counters_.nDeposited();
     s.nActive = 0;
     s.nMat = 0;
+    s.nCarried = counters_.nCarried();
     s.absP = Zero;
     s.pp = Zero;
 
@@ -49,6 +50,7 @@ Foam::fiberCloud::statistics Foam::fiberCloud::stats() const
 
     reduce(s.nActive, sumOp<label>());
     reduce(s.nMat, sumOp<label>());
+    s.nMat += s.nCarried;
     reduce(s.absP, sumOp<vector>());
     reduce(s.pp, sumOp<symmTensor>());
 

@@ -509,6 +509,18 @@ void Foam::fiberCloud::centreMoved
         }
     }
 
+    if
+    (
+        fibers_[fi].inMat()
+     && c.where != fiberTracker::stop::none
+     && c.where != fiberTracker::stop::processor
+    )
+    {
+        // A mat fiber its belt carried out of the domain
+        carriedOut(fi, mesh_.boundaryMesh().whichPatch(c.face));
+        return;
+    }
+
     switch (c.where)
     {
         case fiberTracker::stop::none:

@@ -26,6 +26,7 @@ Foam::fiberCounters::fiberCounters
     nInjected_(0),
     nEscaped_(0),
     nDeposited_(0),
+    nCarried_(0),
     outlets_(outlets),
     outletIndex_(nPatches, -1),
     nEscapedOutlet_(outlets.size(), 0),
@@ -33,11 +34,14 @@ Foam::fiberCounters::fiberCounters
     nInjectedSet_(),
     nEscapedSet_(),
     nDepositedSet_(),
+    nCarriedSet_(),
     nEscapedStep_(0),
     nDepositedStep_(0),
     nEscapedOutletStep_(outlets.size(), 0),
     nEscapedSetStep_(),
-    nDepositedSetStep_()
+    nDepositedSetStep_(),
+    nCarriedStep_(0),
+    nCarriedSetStep_()
 {
     forAll(outlets_, i)
     {
@@ -56,6 +60,8 @@ void Foam::fiberCounters::setSets(const wordList& names)
     nDepositedSet_.setSize(names.size(), 0);
     nEscapedSetStep_.setSize(names.size(), 0);
     nDepositedSetStep_.setSize(names.size(), 0);
+    nCarriedSet_.setSize(names.size(), 0);
+    nCarriedSetStep_.setSize(names.size(), 0);
 }
 
 
@@ -77,6 +83,8 @@ void Foam::fiberCounters::beginStep()
     nDepositedStep_ = 0;
     nEscapedSetStep_ = 0;
     nDepositedSetStep_ = 0;
+    nCarriedStep_ = 0;
+    nCarriedSetStep_ = 0;
 }
 
 
@@ -91,10 +99,13 @@ void Foam::fiberCounters::endStep()
     nDeposited_ += returnReduce(nDepositedStep_, sumOp<label>());
     reduce(nEscapedSetStep_, sumOp<labelList>());
     reduce(nDepositedSetStep_, sumOp<labelList>());
+    nCarried_ += returnReduce(nCarriedStep_, sumOp<label>());
+    reduce(nCarriedSetStep_, sumOp<labelList>());
     forAll(setNames_, k)
     {
         nEscapedSet_[k] += nEscapedSetStep_[k];
         nDepositedSet_[k] += nDepositedSetStep_[k];
+        nCarriedSet_[k] += nCarriedSetStep_[k];
     }
 }
 
@@ -112,7 +123,7 @@ Foam::List<Foam::FixedList<Foam::label, 5>> Foam::fiberCounters::setCounts
         c[k][1] = active[k];
         c[k][2] = nEscapedSet_[k];
         c[k][3] = nDepositedSet_[k];
-        c[k][4] = mat[k];
+        c[k][4] = mat[k] + nCarriedSet_[k];
     }
     return c;
 }
@@ -121,11 +132,12 @@ Foam::List<Foam::FixedList<Foam::label, 5>> Foam::fiberCounters::setCounts
 void Foam::fiberCounters::write(Ostream& os, const label nFeeds) const
 {
     os  << "nInjected " << nInjected_ << " nEscaped " << nEscaped_
-        << " nDeposited " << nDeposited_ << nl
+        << " nDeposited " << nDeposited_ << " nCarried " << nCarried_
+        << nl
         << "nEscapedOutlet " << nEscapedOutlet_ << nl
         << "sets " << setNames_ << token::SPACE << nInjectedSet_
         << token::SPACE << nEscapedSet_ << token::SPACE << nDepositedSet_
-        << nl
+        << token::SPACE << nCarriedSet_ << nl
         << "feeds " << nFeeds;
 }
 
@@ -133,7 +145,8 @@ void Foam::fiberCounters::write(Ostream& os, const label nFeeds) const
 void Foam::fiberCounters::read(Istream& is, const label nFeeds)
 {
     word key;
-    is  >> key >> nInjected_ >> key >> nEscaped_ >> key >> nDeposited_;
+    is  >> key >> nInjected_ >> key >> nEscaped_ >> key >> nDeposited_
+        >> key >> nCarried_;
     labelList outlets;
     is  >> key >> outlets;
     if (outlets.size() != nEscapedOutlet_.size())
@@ -146,7 +159,7 @@ void Foam::fiberCounters::read(Istream& is, const label nFeeds)
     nEscapedOutlet_ = outlets;
     const wordList names(setNames_);
     is  >> key >> setNames_ >> nInjectedSet_ >> nEscapedSet_
-        >> nDepositedSet_;
+        >> nDepositedSet_ >> nCarriedSet_;
     label nFeedsFile;
     is  >> key >> nFeedsFile;
     if (setNames_ != names || nFeedsFile != nFeeds)

@@ -11,6 +11,8 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "wallRules.H"
+#include "polyPatch.H"
+#include "SubField.H"
 #include "keywordCheck.H"
 #include "wordRes.H"
 #include "ListOps.H"
@@ -61,8 +63,8 @@ Foam::wallRules::rule Foam::wallRules::readRule
     const wordList known
     (
         r == rule::mat
-      ? wordList({"type", "restSpeed", "restFraction", "restTime",
-            "machineDirection", "randomSheets"})
+      ? wordList({"type", "velocity", "restSpeed", "restFraction",
+            "restTime", "machineDirection", "randomSheets"})
       : wordList({"type"})
     );
     for (const entry& se : *sub)
@@ -78,12 +80,14 @@ Foam::wallRules::rule Foam::wallRules::readRule
     if (r == rule::mat)
     {
         const dictionary& md = *sub;
+        w.U = md.getOrDefault<vector>("velocity", Zero);
         w.restSpeed =
             md.found("restSpeed") ? keywordCheck::positive(md, "restSpeed")
           : -1;
         w.restFraction = keywordCheck::positive(md, "restFraction", 0.01);
         w.restTime = md.getOrDefault<scalar>("restTime", 0);
-        w.md = md.getOrDefault<vector>("machineDirection", Zero);
+        // MD: as given, else a belt's direction of motion
+        w.md = mag(w.U) > 0 ? w.U/mag(w.U) : vector(Zero);
         if (md.found("machineDirection"))
         {
             w.md = keywordCheck::unitVector(md, "machineDirection");
@@ -162,8 +166,39 @@ void Foam::wallRules::applyEntry
                 << " stop there with rule mat; not " << ruleNames[r]
                 << exit(FatalIOError);
         }
+        if (r == rule::mat)
+        {
+            checkTangent(rules, key, pbm[patchi], w.U);
+        }
         rule_[patchi] = r;
         wireOfPatch[patchi] = w;
+    }
+}
+
+
+void Foam::wallRules::checkTangent
+(
+    const dictionary& dict,
+    const keyType& key,
+    const polyPatch& pp,
+    const vector& U
+) const
+{
+    // A belt moves in its own surface: the velocity tangent to every face
+    // of the patch (of every processor's part)
+    scalar un = 0;
+    for (const vector& Sf : pp.faceAreas())
+    {
+        un = max(un, mag(Sf & U)/max(mag(Sf), VSMALL));
+    }
+    reduce(un, maxOp<scalar>());
+    if (un > 1e-6*mag(U))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'velocity' of '" << key << "': " << U << " is not"
+            << " tangent to patch " << pp.name() << " (a normal component"
+            << " of up to " << un << " m/s); a belt moves in its surface"
+            << exit(FatalIOError);
     }
 }
 
@@ -252,6 +287,19 @@ Foam::wallRules::wallRules
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::wallRules::anyMoving() const
+{
+    for (const wire& w : wires_)
+    {
+        if (mag(w.U) > 0)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
 
 bool Foam::wallRules::any(const rule r) const
 {

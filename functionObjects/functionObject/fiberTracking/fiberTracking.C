@@ -530,6 +530,10 @@ void Foam::functionObjects::fiberTracking::progress(const bool last)
     if (cloud_->rules().wires().size())
     {
         Info<< ", in the mat " << s.nMat;
+        if (cloud_->rules().anyMoving())
+        {
+            Info<< " (carried out " << s.nCarried << ")";
+        }
     }
     Info<< "; " << cpuFibers_ << " s of CPU so far, "
         << (fiberTime_ > 0 ? cpuFibers_/fiberTime_ : 0)
@@ -647,6 +651,10 @@ void Foam::functionObjects::fiberTracking::writeStatistics()
         if (cloud_->rules().wires().size())
         {
             os << tab << s.nMat;
+        }
+        if (cloud_->rules().anyMoving())
+        {
+            os << tab << s.nCarried;
         }
         os << endl;
     }
@@ -899,8 +907,8 @@ void Foam::functionObjects::fiberTracking::writeEvents
     OFstream& os
 ) const
 {
-    static const char* kinds[4] =
-        {"injected", "escaped", "deposited", "mat"};
+    static const char* kinds[5] =
+        {"injected", "escaped", "deposited", "mat", "carried"};
     const label m = fiberCloud::eventSize;
     const wordList& sets = cloud_->setNames();
     for (label k = 0; k < ev.size()/m; ++k)
@@ -1387,6 +1395,7 @@ void Foam::functionObjects::fiberTracking::createFiles
         "Time nInjected nActive nEscaped nDeposited absP1 absP2 absP3"
         " pp_xx pp_xy pp_xz pp_yy pp_yz pp_zz"
       + string(cloud_->rules().wires().size() ? " nMat" : "")
+      + string(cloud_->rules().anyMoving() ? " nCarried" : "")
     );
     os << endl;
 
