@@ -2439,6 +2439,7 @@ void testFlexibleResponse();
 void testContactIslands();
 void testSegmentPairSearch();
 void testContactLaws();
+void testMatStore();
 
 
 int main()
@@ -2482,6 +2483,7 @@ int main()
         testFlexibleResponse();
         testContactIslands();
         testSegmentPairSearch();
+        testMatStore();
         testContactLaws();
     }
     catch (const Foam::error& err)

@@ -140,6 +140,13 @@ Foam::fiberCloud::fiberCloud
 )
 :
     mesh_(mesh),
+    mats_(),
+    near_(),
+    nearMotion_(0),
+    nearMargin_(0),
+    nearFrom_(),
+    nBeyondMargin_(0),
+    view_(),
     jeffery_(dict.getOrDefault<bool>("jefferyCorrection", false)),
     coupling_(couplingFrom(mesh, dict, rhoFluid)),
     buoyancy_(dict.getOrDefault<Switch>("buoyancy", false)),
@@ -244,6 +251,16 @@ Foam::fiberCloud::fiberCloud
         return;
     }
     injectAtStart(dict, injectionDict, all, origins);
+}
+
+
+namespace Foam
+{
+    //- The flow of a fiber the interactions do not move (a mat's)
+    static const fiberInteraction::flow noFlow
+    {
+        Zero, Zero, 0, GREAT, GREAT, 0, GREAT, false, true
+    };
 }
 
 
@@ -515,114 +532,13 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     scalar tLeft = dt;
     while (true)
     {
-        // The window, and the fibers that run through it without stops
         scalar tWindow = 0;
         bool anyEngaged = true;
         if (active)
         {
-            tCommon_ = tLeft;
-            List<bool> engaged(fibers_.size(), true);
-            const std::clock_t c0 = std::clock();
-            const scalar H =
-                interactions_->nextWindow
-                (
-                    fibers_, roles(true), flows(), dt, tLeft, engaged
-                );
-            cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
-            tWindow = H < tLeft ? tLeft - H : 0;
-            label nEngaged = 0;
-            label nFree = 0;
-            forAll(step_, fi)
-            {
-                stepState& st = step_[fi];
-                st.engaged = engaged[fi];
-                const fiber& f = fibers_[fi];
-                if
-                (
-                    st.st == status::gone || fixedSet_[f.setIndex()]
-                 || f.inMat()
-                )
-                {
-                    continue;
-                }
-                ++nFree;
-                if (st.engaged)
-                {
-                    ++nEngaged;
-                }
-                else
-                {
-                    st.load = fiberIntegrator::load();
-                }
-                st.st =
-                    !st.engaged && st.tLeft > tWindow
-                  ? status::running
-                  : status::done;
-            }
-            reduce(nEngaged, sumOp<label>());
-            reduce(nFree, sumOp<label>());
-            anyEngaged = nEngaged > 0;
-            nEngaged_ += nEngaged;
-            nInWindows_ += nFree;
-            ++nWindows_;
-            inIntervals_ = false;
-            advance(tWindow);
+            tWindow = openWindow(dt, tLeft, anyEngaged);
         }
-
-        // The intervals of the window
-        inIntervals_ = active;
-        scalar tl = tLeft;
-        while (true)
-        {
-            tCommon_ = tl;
-            scalar h = tl - tWindow;
-            if (active && anyEngaged)
-            {
-                const std::clock_t c0 = std::clock();
-                h = interactions_->nextInterval(fibers_, roles(), dt, h);
-                cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
-            }
-            tStopLeft_ = h < tl - tWindow ? tl - h : tWindow;
-
-            // The engaged fibers that reach into the interval run in it;
-            // one a feed releases after its end (less time left) waits
-            forAll(step_, fi)
-            {
-                stepState& st = step_[fi];
-                if
-                (
-                    (st.st == status::done || st.st == status::running)
-                 && (st.engaged || !active)
-                )
-                {
-                    st.st =
-                        st.tLeft > tStopLeft_ ? status::running : status::done;
-                }
-            }
-            if (active)
-            {
-                interact(tEnd_ - tl, tl - tStopLeft_);
-            }
-            advance(tStopLeft_);
-            if (rules_->anyMoving())
-            {
-                // The belts' mats to the interval's end (those a belt took
-                // to another processor sent on)
-                carry(tEnd_ - tl, tEnd_ - tStopLeft_);
-                advance(tStopLeft_);
-            }
-            if (active)
-            {
-                tCommon_ = tStopLeft_;
-                settle();
-            }
-            if (!(tStopLeft_ > tWindow))
-            {
-                break;
-            }
-            tl = tStopLeft_;
-        }
-        inIntervals_ = false;
+        intervals(dt, tLeft, tWindow, active && anyEngaged);
         if (!(tWindow > 0))
         {
             break;
@@ -631,6 +547,128 @@ void Foam::fiberCloud::evolve(const scalar t0, const scalar dt)
     }
 
     endStep(dt);
+}
+
+
+Foam::scalar Foam::fiberCloud::openWindow
+(
+    const scalar dt,
+    const scalar tLeft,
+    bool& anyEngaged
+)
+{
+    // The window from where tLeft of the step is left, and the fibers
+    // that run through it without stops; the time left at its end
+    tCommon_ = tLeft;
+    const std::clock_t c0 = std::clock();
+    List<fiberInteraction::flow> fl(flows());
+    if (!(tLeft < dt))
+    {
+        // The step's first window: the mat fibers it may meet
+        selectNear(fl);
+        fl.resize(fibers_.size() + near_.size(), noFlow);
+    }
+    List<bool> engaged(fl.size(), true);
+    const scalar H =
+        interactions_->nextWindow(view(), roles(true), fl, dt, tLeft, engaged);
+    cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
+    const scalar tWindow = H < tLeft ? tLeft - H : 0;
+    label nEngaged = 0;
+    label nFree = 0;
+    forAll(step_, fi)
+    {
+        stepState& st = step_[fi];
+        st.engaged = engaged[fi];
+        const fiber& f = fibers_[fi];
+        if (st.st == status::gone || fixedSet_[f.setIndex()] || f.inMat())
+        {
+            continue;
+        }
+        ++nFree;
+        if (st.engaged)
+        {
+            ++nEngaged;
+        }
+        else
+        {
+            st.load = fiberIntegrator::load();
+        }
+        st.st =
+            !st.engaged && st.tLeft > tWindow ? status::running : status::done;
+    }
+    reduce(nEngaged, sumOp<label>());
+    reduce(nFree, sumOp<label>());
+    anyEngaged = nEngaged > 0;
+    nEngaged_ += nEngaged;
+    nInWindows_ += nFree;
+    ++nWindows_;
+    inIntervals_ = false;
+    advance(tWindow);
+    return tWindow;
+}
+
+
+void Foam::fiberCloud::intervals
+(
+    const scalar dt,
+    const scalar tLeft,
+    const scalar tWindow,
+    const bool engaged
+)
+{
+    // The intervals of the window from tLeft to tWindow left
+    const bool active = interactions_->active();
+    inIntervals_ = active;
+    scalar tl = tLeft;
+    while (true)
+    {
+        tCommon_ = tl;
+        scalar h = tl - tWindow;
+        if (engaged)
+        {
+            const std::clock_t c0 = std::clock();
+            h = interactions_->nextInterval(view(), roles(), dt, h);
+            cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
+        }
+        tStopLeft_ = h < tl - tWindow ? tl - h : tWindow;
+
+        // The engaged fibers that reach into the interval run in it; one
+        // a feed releases after its end (less time left) waits
+        for (stepState& st : step_)
+        {
+            if
+            (
+                (st.st == status::done || st.st == status::running)
+             && (st.engaged || !active)
+            )
+            {
+                st.st = st.tLeft > tStopLeft_ ? status::running : status::done;
+            }
+        }
+        if (active)
+        {
+            interact(tEnd_ - tl, tl - tStopLeft_);
+        }
+        advance(tStopLeft_);
+        if (rules_->anyMoving())
+        {
+            // The belts' mats to the interval's end (those a belt took to
+            // another processor sent on)
+            carry(tEnd_ - tl, tEnd_ - tStopLeft_);
+            advance(tStopLeft_);
+        }
+        if (active)
+        {
+            tCommon_ = tStopLeft_;
+            settle();
+        }
+        if (!(tStopLeft_ > tWindow))
+        {
+            break;
+        }
+        tl = tStopLeft_;
+    }
+    inIntervals_ = false;
 }
 
 
@@ -684,6 +722,7 @@ void Foam::fiberCloud::beginStep(const scalar t0, const scalar dt)
                 0
             };
     }
+    near_.clear();
     counters_.beginStep();
     nSentStep_ = 0;
     nOnwardStep_ = 0;
@@ -716,16 +755,11 @@ Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
     {
         calcWallClearance();
     }
-    List<fiberInteraction::flow> fl(fibers_.size());
+    List<fiberInteraction::flow> fl(fibers_.size() + near_.size(), noFlow);
     forAll(fibers_, fi)
     {
         fiberInteraction::flow& fw = fl[fi];
-        fw =
-            fiberInteraction::flow
-            {
-                Zero, Zero, 0, GREAT, GREAT, 0, GREAT, false,
-                step_[fi].engaged
-            };
+        fw.engaged = step_[fi].engaged;
         const fiber& f = fibers_[fi];
         if (f.inMat())
         {
@@ -805,7 +839,7 @@ Foam::List<Foam::fiberInteraction::role> Foam::fiberCloud::roles
 ) const
 {
     typedef fiberInteraction::role role;
-    List<role> r(fibers_.size());
+    List<role> r(fibers_.size() + near_.size(), role::fixed);
     forAll(fibers_, fi)
     {
         // A fiber a feed releases later in the step is not there yet (at
@@ -824,6 +858,22 @@ Foam::List<Foam::fiberInteraction::role> Foam::fiberCloud::roles
 }
 
 
+const Foam::UPtrList<Foam::fiber>& Foam::fiberCloud::view()
+{
+    const label nF = fibers_.size();
+    view_.resize(nF + near_.size());
+    forAll(fibers_, fi)
+    {
+        view_.set(fi, &fibers_[fi]);
+    }
+    forAll(near_, k)
+    {
+        view_.set(nF + k, &mats_[near_[k]]);
+    }
+    return view_;
+}
+
+
 void Foam::fiberCloud::interact(const scalar t, const scalar h)
 {
     // The loads of the fibers present, new, in a buffer kept between
@@ -831,7 +881,7 @@ void Foam::fiberCloud::interact(const scalar t, const scalar h)
     // engaged in the window: none since the window's start)
     const List<fiberInteraction::role> r(roles());
     List<fiberIntegrator::load>& loads = loadBuf_;
-    loads.resize(fibers_.size());
+    loads.resize(r.size());
     forAll(r, fi)
     {
         if (r[fi] != fiberInteraction::role::absent)
@@ -840,10 +890,10 @@ void Foam::fiberCloud::interact(const scalar t, const scalar h)
         }
     }
     const std::clock_t c0 = std::clock();
-    interactions_->interact(fibers_, r, t, h, loads);
+    interactions_->interact(view(), r, t, h, loads);
     cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
     ++nIntervals_;
-    forAll(r, fi)
+    forAll(fibers_, fi)
     {
         if (r[fi] != fiberInteraction::role::absent)
         {
@@ -858,18 +908,20 @@ void Foam::fiberCloud::settle()
 {
     const List<fiberInteraction::role> r(roles());
     List<fiberIntegrator::load>& loads = loadBuf_;
-    loads.resize(fibers_.size());
+    loads.resize(r.size());
     forAll(r, fi)
     {
         if (r[fi] != fiberInteraction::role::absent)
         {
-            loads[fi] = std::move(step_[fi].load);
+            loads[fi] =
+                fi < fibers_.size()
+              ? std::move(step_[fi].load) : fiberIntegrator::load();
         }
     }
     const std::clock_t c0 = std::clock();
-    interactions_->settle(fibers_, r, loads);
+    interactions_->settle(view(), r, loads);
     cpuInteractions_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
-    forAll(r, fi)
+    forAll(fibers_, fi)
     {
         if (r[fi] != fiberInteraction::role::absent)
         {
@@ -929,6 +981,7 @@ void Foam::fiberCloud::advance(const scalar tStopLeft)
 
 void Foam::fiberCloud::endStep(const scalar dt)
 {
+    checkMargin();
     joinAtRest();
     label nSubMax = 0;
     for (const stepState& st : step_)
@@ -961,10 +1014,17 @@ void Foam::fiberCloud::endStep(const scalar dt)
 
 void Foam::fiberCloud::compact()
 {
+    // The fibers that joined a mat at rest move to mats_, at once
+    PtrList<fiber> joining(fibers_.size());
+    label nJoining = 0;
     label n = 0;
     forAll(fibers_, fi)
     {
-        if (step_[fi].st != status::gone)
+        if (step_[fi].st != status::gone && restsInMat(fibers_[fi]))
+        {
+            joining.set(nJoining++, fibers_.set(fi, nullptr).ptr());
+        }
+        else if (step_[fi].st != status::gone)
         {
             if (n != fi)
             {
@@ -976,6 +1036,8 @@ void Foam::fiberCloud::compact()
     }
     fibers_.setSize(n);
     step_.setSize(n);
+    joining.setSize(nJoining);
+    mats_.add(joining);
 }
 
 

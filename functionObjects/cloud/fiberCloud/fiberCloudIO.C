@@ -65,17 +65,20 @@ void Foam::fiberCloud::writeRestart(Ostream& os) const
             << coupling_->dragRate().field();
     }
     os  << nl
-        << "nFibers " << fibers_.size() << nl;
-    for (const fiber& f : fibers_)
+        << "nFibers " << fibers_.size() + mats_.size() << nl;
+    for (const PtrList<fiber>* fs : {&fibers_, &mats_.fibers()})
     {
-        os << f << nl;
-        writeLocation(os, f.location());
-        for (const trackedPoint& tp : f.segmentLocations())
+        for (const fiber& f : *fs)
         {
-            os << token::SPACE;
-            writeLocation(os, tp);
+            os << f << nl;
+            writeLocation(os, f.location());
+            for (const trackedPoint& tp : f.segmentLocations())
+            {
+                os << token::SPACE;
+                writeLocation(os, tp);
+            }
+            os << nl;
         }
-        os << nl;
     }
     interactions_->writeRestart(os);
     os.check(FUNCTION_NAME);
@@ -109,9 +112,13 @@ void Foam::fiberCloud::readRestart(Istream& is)
     }
     readCoupling(is);
 
+    // The fibers; those in a mat at rest go to mats_
     label n;
     is >> key >> n;
     fibers_.setSize(n);
+    PtrList<fiber> resting(n);
+    label nF = 0;
+    label nR = 0;
     for (label fi = 0; fi < n; ++fi)
     {
         fiber* fPtr = new fiber(is);
@@ -120,8 +127,18 @@ void Foam::fiberCloud::readRestart(Istream& is)
         {
             readLocation(is, tp);
         }
-        fibers_.set(fi, fPtr);
+        if (restsInMat(*fPtr))
+        {
+            resting.set(nR++, fPtr);
+        }
+        else
+        {
+            fibers_.set(nF++, fPtr);
+        }
     }
+    fibers_.setSize(nF);
+    resting.setSize(nR);
+    mats_.add(resting);
     interactions_->readRestart(is);
     is.check(FUNCTION_NAME);
     checkLocations();

@@ -320,6 +320,159 @@ void Foam::fiberCloud::carriedOut(const label fi, const label patchi)
 }
 
 
+bool Foam::fiberCloud::restsInMat(const fiber& f) const
+{
+    return
+        f.inMat()
+     && magSqr(rules_->wires()[rules_->wireOf(f.matPatch())].U) == 0;
+}
+
+
+Foam::scalar Foam::fiberCloud::speedBound
+(
+    const fiber& f,
+    const fiberInteraction::flow& w
+) const
+{
+    // Its own speed and its ends' turning (a flexible fiber's: each
+    // segment's), or the fluid's with the slack and its gradient across
+    // the fiber and the terminal speed of gravity less buoyancy (or what
+    // gravity adds over the step, if less), whichever is larger: the drag
+    // relaxes the velocity from the one towards the other
+    const scalar L = f.length();
+    scalar v = mag(f.velocity()) + 0.5*mag(f.omega())*L;
+    if (f.flexible())
+    {
+        const tensor R(f.R());
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            v =
+                max
+                (
+                    v,
+                    mag(f.segmentVelocity(R, i))
+                  + 0.5*mag(f.segmentOmega(i))*f.segmentLength(i)
+                );
+        }
+    }
+    return
+        max(v, mag(w.U) + w.slack + 0.5*mag(w.G)*L + w.g*min(w.tauHi, dt_));
+}
+
+
+void Foam::fiberCloud::selectNear(const UList<fiberInteraction::flow>& fl)
+{
+    near_.clear();
+    nearFrom_.clear();
+    if (returnReduce(mats_.size(), sumOp<label>()) == 0)
+    {
+        return;
+    }
+
+    // How far a free fiber may move in the step: twice the step times the
+    // largest speed bound of every processor's fibers (a belt's speed
+    // too); the margin adds the range and the largest diameter
+    scalar V = 0;
+    scalar d = 0;
+    DynamicList<point> boxes;
+    forAll(fibers_, fi)
+    {
+        const fiber& f = fibers_[fi];
+        if (step_[fi].st == status::gone)
+        {
+            continue;
+        }
+        if (f.inMat() || fixedSet_[f.setIndex()])
+        {
+            V = max(V, mag(f.velocity()));
+            continue;
+        }
+        V = max(V, speedBound(f, fl[fi]));
+        for (label i = 0; i < f.nSegments(); ++i)
+        {
+            d = max(d, f.segmentDiameter(i));
+        }
+        const boundBox bb(matStore::boxOf(f));
+        boxes.append(bb.min());
+        boxes.append(bb.max());
+        nearFrom_.insert(f.id(), f.ends());
+    }
+    reduce(V, maxOp<scalar>());
+    reduce(d, maxOp<scalar>());
+    nearMotion_ = 2*V*dt_;
+    nearMargin_ = nearMotion_ + interactions_->range() + d;
+
+    // Every processor's boxes, widened, and their periodic images
+    List<pointField> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = pointField(boxes);
+    fiberCompat::allGatherList(all);
+    const vector m(vector::uniform(nearMargin_));
+    DynamicList<boundBox> q;
+    for (const pointField& b : all)
+    {
+        for (label k = 0; k < b.size(); k += 2)
+        {
+            const boundBox bb(b[k] - m, b[k + 1] + m);
+            q.append(bb);
+            const pointField corners(bb.points());
+            for (const vectorTensorTransform& T : images_)
+            {
+                boundBox image;
+                for (const point& p : corners)
+                {
+                    image.add(T.transformPosition(p));
+                }
+                q.append(image);
+            }
+        }
+    }
+    near_ = mats_.near(q);
+}
+
+
+void Foam::fiberCloud::checkMargin()
+{
+    // The ends of each free fiber against where they were at the step's
+    // start (or an image of there: it may have crossed a periodic patch)
+    forAll(fibers_, fi)
+    {
+        const fiber& f = fibers_[fi];
+        const auto it = nearFrom_.cfind(f.id());
+        if (step_[fi].st == status::gone || !it.found())
+        {
+            continue;
+        }
+        const FixedList<point, 2> e(f.ends());
+        scalar moved = GREAT;
+        for (label t = -1; t < images_.size(); ++t)
+        {
+            scalar m = 0;
+            forAll(e, j)
+            {
+                const point p0
+                (
+                    t < 0 ? (*it)[j] : images_[t].transformPosition((*it)[j])
+                );
+                m = max(m, mag(e[j] - p0));
+            }
+            moved = min(moved, m);
+        }
+        if (moved > nearMotion_)
+        {
+            if (nBeyondMargin_++ < 5)
+            {
+                WarningInFunction
+                    << "Fiber " << f.id() << " moved " << moved << " m in the"
+                    << " step, more than the margin " << nearMotion_
+                    << " m of the mat fibers searched for its contacts"
+                    << endl;
+            }
+        }
+    }
+    nearFrom_.clear();
+}
+
+
 Foam::label Foam::fiberCloud::wireOfPartner(const vector& U) const
 {
     // The wire whose velocity the partner has (the first), else the first

@@ -48,6 +48,7 @@ Foam::fiberCloud::statistics Foam::fiberCloud::stats() const
         s.pp += sqr(p);
     }
 
+    s.nMat += mats_.size();
     reduce(s.nActive, sumOp<label>());
     reduce(s.nMat, sumOp<label>());
     s.nMat += s.nCarried;
@@ -65,10 +66,14 @@ Foam::fiberCloud::statistics Foam::fiberCloud::stats() const
 
 Foam::List<Foam::fiberCloud::state> Foam::fiberCloud::gatherStates() const
 {
-    List<state> local(fibers_.size());
-    forAll(fibers_, fi)
+    List<state> local(fibers_.size() + mats_.size());
+    label k = 0;
+    for (const PtrList<fiber>* fs : {&fibers_, &mats_.fibers()})
     {
-        local[fi] = fiberEventLog::stateOf(fibers_[fi]);
+        for (const fiber& f : *fs)
+        {
+            local[k++] = fiberEventLog::stateOf(f);
+        }
     }
     return fiberEventLog::gatherSorted(local);
 }
@@ -82,6 +87,10 @@ Foam::fiberCloud::setCounts() const
     for (const fiber& f : fibers_)
     {
         ++(f.inMat() ? mat : active)[f.setIndex()];
+    }
+    for (const fiber& f : mats_.fibers())
+    {
+        ++mat[f.setIndex()];
     }
     reduce(active, sumOp<labelList>());
     reduce(mat, sumOp<labelList>());
@@ -226,94 +235,57 @@ Foam::scalarList Foam::fiberCloud::costliest() const
 Foam::scalarList Foam::fiberCloud::gatherMatSegments() const
 {
     DynamicList<scalar> rec;
+    for (const fiber& f : mats_.fibers())
+    {
+        matRecords(f, rec);
+    }
     for (const fiber& f : fibers_)
     {
-        if (!f.inMat())
+        if (f.inMat())
         {
-            continue;
-        }
-        const tensor R(f.R());
-        const vector p(f.orientation());
-        for (label i = 0; i < f.nSegments(); ++i)
-        {
-            const vector c(f.position() + f.segmentOffset(R, i));
-            const vector z(f.segmentDirection(R, i));
-            for
-            (
-                const scalar x
-              : {
-                    scalar(f.matPatch()), scalar(f.id()), c.x(), c.y(),
-                    c.z(), z.x(), z.y(), z.z(), f.segmentLength(i),
-                    f.segmentDiameter(i), f.segmentMass(i), p.x(), p.y(),
-                    p.z()
-                }
-            )
-            {
-                rec.append(x);
-            }
+            matRecords(f, rec);
         }
     }
-    List<scalarList> all(Pstream::nProcs());
-    all[Pstream::myProcNo()] = std::move(rec);
-    Pstream::gatherList(all);
-    if (!Pstream::master())
-    {
-        return scalarList();
-    }
-    DynamicList<scalar> out;
-    for (const scalarList& r : all)
-    {
-        out.append(r);
-    }
-    return scalarList(std::move(out));
+    return gatherConcatenated(rec);
 }
 
 
-Foam::scalarList Foam::fiberCloud::gatherSegments() const
+void Foam::fiberCloud::matRecords
+(
+    const fiber& f,
+    DynamicList<scalar>& rec
+)
 {
-    const label m = fiberVtkWriter::recordSize;
-    label n = 0;
-    for (const fiber& f : fibers_)
+    const tensor R(f.R());
+    const vector p(f.orientation());
+    for (label i = 0; i < f.nSegments(); ++i)
     {
-        n += f.nSegments();
-    }
-    List<scalarList> all(Pstream::nProcs());
-    scalarList& rec = all[Pstream::myProcNo()];
-    rec.setSize(m*n);
-    label k = 0;
-    for (const fiber& f : fibers_)
-    {
-        const tensor R(f.R());
-        const vector p(f.orientation());
-        for (label i = 0; i < f.nSegments(); ++i)
-        {
-            const vector r(f.segmentOffset(R, i));
-            const vector half
-            (
-                (0.5*f.segmentLength(i))*f.segmentDirection(R, i)
-            );
-            const vector v(f.segmentVelocity(R, i));
-            rec[k++] = f.id();
-            for
-            (
-                const vector& w
-              : {
-                    vector(f.position() + r - half),
-                    vector(f.position() + r + half),
-                    v, f.velocity(), f.segmentOmega(i), p
-                }
-            )
-            {
-                for (direction c = 0; c < 3; ++c)
-                {
-                    rec[k++] = w[c];
-                }
+        const vector c(f.position() + f.segmentOffset(R, i));
+        const vector z(f.segmentDirection(R, i));
+        for
+        (
+            const scalar x
+          : {
+                scalar(f.matPatch()), scalar(f.id()), c.x(), c.y(), c.z(),
+                z.x(), z.y(), z.z(), f.segmentLength(i),
+                f.segmentDiameter(i), f.segmentMass(i), p.x(), p.y(), p.z()
             }
-            rec[k++] = f.segmentDiameter(i);
-            rec[k++] = f.matPatch();
-            rec[k++] = f.inMat() ? f.landTime() : -1;
+        )
+        {
+            rec.append(x);
         }
     }
+}
+
+
+Foam::scalarList Foam::fiberCloud::gatherConcatenated
+(
+    DynamicList<scalar>& rec
+)
+{
+    // Every processor's records on the master, one after the other
+    List<scalarList> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = std::move(rec);
     Pstream::gatherList(all);
     if (!Pstream::master())
     {
@@ -332,6 +304,61 @@ Foam::scalarList Foam::fiberCloud::gatherSegments() const
         nAll += r.size();
     }
     return out;
+}
+
+
+Foam::scalarList Foam::fiberCloud::gatherSegments() const
+{
+    const label m = fiberVtkWriter::recordSize;
+    DynamicList<scalar> rec;
+    for (const PtrList<fiber>* fs : {&fibers_, &mats_.fibers()})
+    {
+        for (const fiber& f : *fs)
+        {
+            rec.reserve(rec.size() + m*f.nSegments());
+            vtkRecords(f, rec);
+        }
+    }
+    return gatherConcatenated(rec);
+}
+
+
+void Foam::fiberCloud::vtkRecords
+(
+    const fiber& f,
+    DynamicList<scalar>& rec
+)
+{
+    const tensor R(f.R());
+    const vector p(f.orientation());
+    for (label i = 0; i < f.nSegments(); ++i)
+    {
+        const vector r(f.segmentOffset(R, i));
+        const vector half
+        (
+            (0.5*f.segmentLength(i))*f.segmentDirection(R, i)
+        );
+        const vector v(f.segmentVelocity(R, i));
+        rec.append(f.id());
+        for
+        (
+            const vector& w
+          : {
+                vector(f.position() + r - half),
+                vector(f.position() + r + half),
+                v, f.velocity(), f.segmentOmega(i), p
+            }
+        )
+        {
+            for (direction c = 0; c < 3; ++c)
+            {
+                rec.append(w[c]);
+            }
+        }
+        rec.append(f.segmentDiameter(i));
+        rec.append(f.matPatch());
+        rec.append(f.inMat() ? f.landTime() : -1);
+    }
 }
 
 // ************************************************************************* //

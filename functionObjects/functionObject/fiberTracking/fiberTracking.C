@@ -805,16 +805,23 @@ void Foam::functionObjects::fiberTracking::writeContacts()
     }
 
     // The fibers, the pairs touching, the contacts per fiber (collective)
-    const PtrList<fiber>& fibers = cloud_->fibers();
     List<labelList> ids(Pstream::nProcs());
     List<List<FixedList<label, 2>>> pairs(Pstream::nProcs());
     labelList& myIds = ids[Pstream::myProcNo()];
-    myIds.setSize(fibers.size());
+    myIds.setSize(cloud_->fibers().size() + cloud_->mats().size());
     labelList count(17, 0);
-    forAll(fibers, fi)
+    label k = 0;
+    for
+    (
+        const PtrList<fiber>* fs
+      : {&cloud_->fibers(), &cloud_->mats().fibers()}
+    )
     {
-        myIds[fi] = fibers[fi].id();
-        ++count[min(cm->contacts(fibers[fi].id()), label(16))];
+        for (const fiber& f : *fs)
+        {
+            myIds[k++] = f.id();
+            ++count[min(cm->contacts(f.id()), label(16))];
+        }
     }
     pairs[Pstream::myProcNo()] = cm->pairs();
     Pstream::gatherList(ids);

@@ -48,7 +48,7 @@ typedef fiberInteractions::contact::contribution contribution;
 //- The contributions added to the loads
 void applyLoads
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     DynamicList<contribution>& parts,
     UList<fiberIntegrator::load>& loads
 )
@@ -698,7 +698,7 @@ void Foam::fiberInteractions::contact::checkCost
 
 Foam::scalar Foam::fiberInteractions::contact::shortestContactTime
 (
-    const PtrList<fiber>& fibers
+    const UPtrList<fiber>& fibers
 ) const
 {
     scalar mMin = GREAT;
@@ -717,7 +717,7 @@ Foam::scalar Foam::fiberInteractions::contact::shortestContactTime
 
 void Foam::fiberInteractions::contact::warnFlexible
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles
 )
 {
@@ -748,7 +748,7 @@ void Foam::fiberInteractions::contact::warnFlexible
 
 Foam::scalar Foam::fiberInteractions::contact::approachInterval
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const scalar tc,
     const scalar tLeft,
@@ -814,7 +814,7 @@ Foam::scalar Foam::fiberInteractions::contact::equalParts
 
 Foam::scalar Foam::fiberInteractions::contact::adaptiveInterval
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const scalar tLeft,
     const scalar tc
@@ -833,7 +833,7 @@ Foam::scalar Foam::fiberInteractions::contact::adaptiveInterval
 
 Foam::scalar Foam::fiberInteractions::contact::nextInterval
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const scalar dt,
     const scalar tLeft
@@ -853,7 +853,7 @@ Foam::scalar Foam::fiberInteractions::contact::nextInterval
 
 void Foam::fiberInteractions::contact::payBack
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const scalar h,
     UList<fiberIntegrator::load>& loads
@@ -905,7 +905,7 @@ void Foam::fiberInteractions::contact::payBack
 
 void Foam::fiberInteractions::contact::pairsInReach
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     DynamicList<segment>& segs,
     DynamicList<FixedList<label, 2>>& cand
@@ -991,7 +991,7 @@ void Foam::fiberInteractions::contact::springLoads
 
 void Foam::fiberInteractions::contact::springInteract
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const UList<segment>& segs,
     const UList<FixedList<label, 2>>& cand,
@@ -1013,7 +1013,7 @@ void Foam::fiberInteractions::contact::springInteract
 
 void Foam::fiberInteractions::contact::interact
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const scalar t,
     const scalar h,
@@ -1132,7 +1132,7 @@ void Foam::fiberInteractions::contact::settleFriction
 
 void Foam::fiberInteractions::contact::balancePair
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<fiberIntegrator::load>& loads,
     const pairKey& k,
     const pairRecord& p,
@@ -1179,7 +1179,7 @@ void Foam::fiberInteractions::contact::balancePair
 
 void Foam::fiberInteractions::contact::settle
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const UList<fiberIntegrator::load>& loads
 )
@@ -1190,7 +1190,7 @@ void Foam::fiberInteractions::contact::settle
 
 void Foam::fiberInteractions::contact::settleSprings
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const UList<fiberIntegrator::load>& loads
 )

@@ -302,7 +302,7 @@ void Foam::fiberInteractions::contact::findPeriodic()
 
 Foam::scalar Foam::fiberInteractions::contact::reach
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles
 ) const
 {
@@ -325,7 +325,7 @@ Foam::scalar Foam::fiberInteractions::contact::reach
 
 void Foam::fiberInteractions::contact::localSegments
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     DynamicList<segment>& segs,
     const UList<fiberIntegrator::load>* loads,
@@ -392,7 +392,7 @@ void Foam::fiberInteractions::contact::localSegments
 
 Foam::scalar Foam::fiberInteractions::contact::gather
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     DynamicList<segment>& segs,
     const UList<fiberIntegrator::load>* loads,
@@ -606,7 +606,7 @@ Foam::scalar Foam::fiberInteractions::contact::approachLimit
 
 Foam::scalar Foam::fiberInteractions::contact::sweptInterval
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const scalar h
 )
@@ -1064,7 +1064,7 @@ void Foam::fiberInteractions::contact::ownCopies
 
 void Foam::fiberInteractions::contact::owedImpulses
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     Map<label>& present,
     UList<bool>& engaged
@@ -1096,7 +1096,7 @@ void Foam::fiberInteractions::contact::owedImpulses
 
 Foam::scalar Foam::fiberInteractions::contact::nextWindow
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const UList<flow>& flows,
     const scalar dt,

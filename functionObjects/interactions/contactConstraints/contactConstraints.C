@@ -175,7 +175,7 @@ bool Foam::fiberInteractions::contactConstraints::constraintOf
 
 void Foam::fiberInteractions::contactConstraints::constrain
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<segment>& segs,
     const UList<FixedList<label, 2>>& cand,
     const scalar h,
@@ -254,7 +254,7 @@ void Foam::fiberInteractions::contactConstraints::constrain
 
 void Foam::fiberInteractions::contactConstraints::decidePair
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const Map<label>& localOf,
     const segment& Q,
     const segment& P,
@@ -316,7 +316,7 @@ void Foam::fiberInteractions::contactConstraints::decidePair
 
 void Foam::fiberInteractions::contactConstraints::addConstraint
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const segment& Q,
     const segment& P,
     const label pLocal,
@@ -402,7 +402,7 @@ void Foam::fiberInteractions::contactConstraints::sortPending()
 
 void Foam::fiberInteractions::contactConstraints::applyConstraints
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const Map<label>& localOf,
     springTable& next,
     UList<fiberIntegrator::load>& loads

@@ -177,7 +177,7 @@ label rootOf(labelList& up, label i)
 
 void Foam::fiberInteractions::contactConstraints::tellPartners
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const Map<label>& localOf,
     const UList<DynamicList<FixedList<label, 5>>>& notes,
     labelHashSet& told,

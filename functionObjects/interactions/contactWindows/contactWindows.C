@@ -510,7 +510,7 @@ void Foam::fiberInteractions::contactWindows::adaptSkin
 
 Foam::scalar Foam::fiberInteractions::contactWindows::choose
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const UList<segment>& segs,
     const UList<FixedList<label, 2>>& cand,

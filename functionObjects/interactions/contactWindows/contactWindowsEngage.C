@@ -127,7 +127,7 @@ Foam::scalar Foam::fiberInteractions::contactWindows::engageNear
 
 void Foam::fiberInteractions::contactWindows::grow
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     List<bool>& eng
 )
 {
@@ -183,7 +183,7 @@ void Foam::fiberInteractions::contactWindows::grow
 
 Foam::scalar Foam::fiberInteractions::contactWindows::engage
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const List<bool>& owes,
     const scalar H,
     const label jH,

@@ -60,7 +60,7 @@ void Foam::fiberContactSchemes::constraints::describe(Ostream& os) const
 
 Foam::scalar Foam::fiberContactSchemes::constraints::interval
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const scalar dt,
     const scalar tLeft,
@@ -73,7 +73,7 @@ Foam::scalar Foam::fiberContactSchemes::constraints::interval
 
 void Foam::fiberContactSchemes::constraints::loads
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const UList<segment>& segs,
     const UList<FixedList<label, 2>>& cand,

@@ -52,7 +52,7 @@ void Foam::fiberContactSchemes::explicitSprings::describe(Ostream& os) const
 
 Foam::scalar Foam::fiberContactSchemes::explicitSprings::interval
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const scalar dt,
     const scalar tLeft,
@@ -76,7 +76,7 @@ Foam::scalar Foam::fiberContactSchemes::explicitSprings::interval
 
 void Foam::fiberContactSchemes::explicitSprings::loads
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const UList<segment>& segs,
     const UList<FixedList<label, 2>>& cand,

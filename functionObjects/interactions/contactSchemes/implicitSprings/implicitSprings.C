@@ -54,7 +54,7 @@ void Foam::fiberContactSchemes::implicitSprings::describe(Ostream& os) const
 
 Foam::scalar Foam::fiberContactSchemes::implicitSprings::interval
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const scalar dt,
     const scalar tLeft,
@@ -68,7 +68,7 @@ Foam::scalar Foam::fiberContactSchemes::implicitSprings::interval
 
 void Foam::fiberContactSchemes::implicitSprings::loads
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const UList<segment>& segs,
     const UList<FixedList<label, 2>>& cand,
@@ -90,7 +90,7 @@ void Foam::fiberContactSchemes::implicitSprings::loads
 
 void Foam::fiberContactSchemes::implicitSprings::settle
 (
-    const PtrList<fiber>& fibers,
+    const UPtrList<fiber>& fibers,
     const UList<role>& roles,
     const UList<fiberIntegrator::load>& loads
 )
