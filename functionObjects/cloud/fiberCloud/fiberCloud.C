@@ -740,11 +740,6 @@ Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
     // viscous resistance across (the larger) and along the segments
     // (tauHi) and with the inertial drag at the largest slip added
     // (tauLo); gravity less buoyancy
-    const fiberTracker::hit here
-    {
-        fiberTracker::stop::none, -1, Zero, false, vectorTensorTransform::I,
-        false
-    };
     // The gap to the walls and symmetry planes, where a fiber rebounds:
     // its centre's cell's clearance less half its length and diameter
     if
@@ -766,17 +761,11 @@ Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
             // On a belt: moving at its velocity
             fw.U = f.velocity();
         }
+        fluidSample s;
         if
         (
-            step_[fi].st == status::gone || !f.location().located()
-         || f.inMat()
+            step_[fi].st == status::gone || f.inMat() || !sampleCentre(f, s)
         )
-        {
-            continue;
-        }
-        fluidSample s;
-        fluidSampler::request req;
-        if (!sampler_.sample(f.location(), here, s, req))
         {
             continue;
         }
@@ -811,13 +800,7 @@ Foam::List<Foam::fiberInteraction::flow> Foam::fiberCloud::flows() const
         }
         fw.tauLo = kHi > 0 ? f.mass()/kHi : GREAT;
         fw.tauHi = kLo > 0 ? f.mass()/kLo : GREAT;
-        fw.g =
-            mag
-            (
-                buoyancy_
-              ? (1 - hydro_.rho()/f.segmentDensity(0))*g_
-              : g_
-            );
+        fw.g = mag(gravityOn(f));
         if (step_[fi].tLeft < tCommon_ - 1e-9*dt_)
         {
             // Released later in the window: it rests where the feed puts

@@ -92,16 +92,10 @@ Foam::scalar Foam::fiberCloud::restSpeed
     // terminal speed under gravity less buoyancy along its weakest
     // viscous resistance
     const fiber& f = fibers_[fi];
-    const fiberTracker::hit here
-    {
-        fiberTracker::stop::none, -1, Zero, false, vectorTensorTransform::I,
-        false
-    };
     fluidSample s;
-    fluidSampler::request req;
     scalar drive = 0;
     scalar kLo = 0;
-    if (sampler_.sample(f.location(), here, s, req))
+    if (sampleCentre(f, s))
     {
         drive = mag(s.U - w.U);
         for (label i = 0; hydro_.viscous() && i < f.nSegments(); ++i)
@@ -109,15 +103,31 @@ Foam::scalar Foam::fiberCloud::restSpeed
             kLo += s.mu*min(f.kAx(i), f.kAp(i));
         }
     }
-    const vector g
-    (
-        buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_
-    );
     if (kLo > 0)
     {
-        drive += mag(g)*f.mass()/kLo;
+        drive += mag(gravityOn(f))*f.mass()/kLo;
     }
     return w.restFraction*drive;
+}
+
+
+bool Foam::fiberCloud::sampleCentre(const fiber& f, fluidSample& s) const
+{
+    const fiberTracker::hit here
+    {
+        fiberTracker::stop::none, -1, Zero, false, vectorTensorTransform::I,
+        false
+    };
+    fluidSampler::request req;
+    return
+        f.location().located()
+     && sampler_.sample(f.location(), here, s, req);
+}
+
+
+Foam::vector Foam::fiberCloud::gravityOn(const fiber& f) const
+{
+    return buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_;
 }
 
 

@@ -141,10 +141,7 @@ void Foam::fiberCloud::fiberResponses
     {
         const fiber& f = fibers_[fis[k]];
         const SubList<fluidSample> sf(s, f.nSegments(), offset[k]);
-        const vector g
-        (
-            buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_
-        );
+        const vector g(gravityOn(f));
         if (f.flexible())
         {
             // The chain's own implicit Euler step (flexibleChain), which
@@ -399,10 +396,7 @@ void Foam::fiberCloud::finish
     f.saveMotion(m0);
 
     // Gravity, less buoyancy if asked for (segments of one density)
-    const vector g
-    (
-        buoyancy_ ? (1 - hydro_.rho()/f.segmentDensity(0))*g_ : g_
-    );
+    const vector g(gravityOn(f));
     if (f.flexible())
     {
         flexWork_.advance
