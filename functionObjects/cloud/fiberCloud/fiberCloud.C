@@ -661,6 +661,7 @@ void Foam::fiberCloud::intervals
         {
             tCommon_ = tStopLeft_;
             settle();
+            captureOnContact();
         }
         if (!(tStopLeft_ > tWindow))
         {

@@ -75,6 +75,37 @@ void Foam::fiberCloud::toMat(const label fi, const label patchi)
 }
 
 
+void Foam::fiberCloud::captureOnContact()
+{
+    // At an interval's end: the free fibers that touched a fixed fiber in
+    // it join the wire of that fiber's velocity where they are, if that
+    // wire takes fibers on contact
+    if (!rules_->anyCapture())
+    {
+        return;
+    }
+    forAll(fibers_, fi)
+    {
+        const fiber& f = fibers_[fi];
+        vector Uw(Zero);
+        if
+        (
+            step_[fi].st == status::gone || f.inMat()
+         || fixedSet_[f.setIndex()]
+         || !interactions_->touchesFixed(f.id(), Uw)
+        )
+        {
+            continue;
+        }
+        const wallRules::wire& w = rules_->wires()[wireOfPartner(Uw)];
+        if (w.capture)
+        {
+            toMat(fi, w.patch);
+        }
+    }
+}
+
+
 Foam::scalar Foam::fiberCloud::restSpeed
 (
     const label fi,

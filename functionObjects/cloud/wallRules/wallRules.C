@@ -55,7 +55,7 @@ Foam::wallRules::rule Foam::wallRules::readRule
             << ruleNames.sortedToc() << exit(FatalIOError);
     }
     const rule r = ruleNames[name];
-    w = wire{-1, Zero, -1, 0.01, 0, Zero, 20};
+    w = wire{-1, Zero, false, -1, 0.01, 0, Zero, 20};
     if (!sub)
     {
         return r;
@@ -63,7 +63,7 @@ Foam::wallRules::rule Foam::wallRules::readRule
     const wordList known
     (
         r == rule::mat
-      ? wordList({"type", "velocity", "restSpeed", "restFraction",
+      ? wordList({"type", "velocity", "join", "restSpeed", "restFraction",
             "restTime", "machineDirection", "randomSheets"})
       : wordList({"type"})
     );
@@ -81,6 +81,14 @@ Foam::wallRules::rule Foam::wallRules::readRule
     {
         const dictionary& md = *sub;
         w.U = md.getOrDefault<vector>("velocity", Zero);
+        const word join(md.getOrDefault<word>("join", "rest"));
+        if (join != "rest" && join != "contact")
+        {
+            FatalIOErrorInFunction(md)
+                << "Entry 'join' of '" << key << "': 'rest' or 'contact',"
+                << " not '" << join << "'" << exit(FatalIOError);
+        }
+        w.capture = (join == "contact");
         w.restSpeed =
             md.found("restSpeed") ? keywordCheck::positive(md, "restSpeed")
           : -1;
@@ -223,7 +231,7 @@ Foam::wallRules::wallRules
         applies_[patchi] = true;
     }
     List<wire> wireOfPatch(pbm.size());
-    wire w{-1, Zero, -1, 0.01, 0, Zero, 20};
+    wire w{-1, Zero, false, -1, 0.01, 0, Zero, 20};
     const dictionary* rulesPtr = dict.findDict("wallInteraction");
     if (!rulesPtr)
     {
@@ -287,6 +295,19 @@ Foam::wallRules::wallRules
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::wallRules::anyCapture() const
+{
+    for (const wire& w : wires_)
+    {
+        if (w.capture)
+        {
+            return true;
+        }
+    }
+    return false;
+}
+
 
 bool Foam::wallRules::anyMoving() const
 {
