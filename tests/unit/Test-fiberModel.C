@@ -2440,6 +2440,7 @@ void testContactIslands();
 void testSegmentPairSearch();
 void testContactLaws();
 void testMatStore();
+void testMatSheet();
 
 
 int main()
@@ -2484,6 +2485,7 @@ int main()
         testContactIslands();
         testSegmentPairSearch();
         testMatStore();
+        testMatSheet();
         testContactLaws();
     }
     catch (const Foam::error& err)

@@ -10,12 +10,13 @@ License
 
 Description
     Unit tests of the mats' store (matStore) against brute force: the
-    fibers a query finds are exactly those whose boxes meet a query box
-    (checked box by box over all fibers), ascending and without repeats,
-    for fibers added in batches of growing size (the grid made anew when
-    a larger fiber comes), small, large and far query boxes; and a
-    straight fiber's box is its axis' ends widened by its radius.  Part
-    of Test-fiberModel.
+    fibers a query finds are exactly those with a segment's box meeting a
+    query box (checked box by box over all segments), ascending and
+    without repeats, for fibers added in batches of growing size (the
+    grid made anew when a larger fiber comes), small, large and far query
+    boxes; a straight fiber's segments' boxes are their axes' ends widened
+    by the radius; the counts per set and the look-up by id equal a walk
+    over all fibers.  Part of Test-fiberModel.
 
 \*---------------------------------------------------------------------------*/
 
@@ -33,7 +34,7 @@ namespace
 {
 
 //- n straight fibers of 1 to 4 segments of length l, at random in a box
-//  of side 5 mm (ids from id0), at random orientations
+//  of side 5 mm (ids from id0), at random orientations, in sets 0 to 4
 PtrList<fiber> randomFibers
 (
     const label n,
@@ -56,6 +57,7 @@ PtrList<fiber> randomFibers
             k,
             new fiber(fiber::straight(id0 + k, c, p, nSeg, l, 2e-5, 1000))
         );
+        fs[k].setIndex(label(5*u01(gen)) % 5);
     }
     return fs;
 }
@@ -68,24 +70,23 @@ void testMatStore()
     std::mt19937 gen(11);
     std::uniform_real_distribution<scalar> u01(0, 1);
 
-    // A straight fiber's box: its axis' ends and its radius
+    // A straight fiber's segments' boxes: their axes' ends and radius
     {
-        const fiber f
-        (
-            fiber::straight
-            (
-                0, point(1, 2, 3), vector(0.6, 0, 0.8), 3, 1e-3, 2e-4, 1
-            )
-        );
-        const boundBox bb(matStore::boxOf(f));
-        const point a(point(1, 2, 3) - 1.5e-3*vector(0.6, 0, 0.8));
-        const point b(point(1, 2, 3) + 1.5e-3*vector(0.6, 0, 0.8));
-        const scalar err =
-            mag(bb.min() - (min(a, b) - vector::uniform(1e-4)))
-          + mag(bb.max() - (max(a, b) + vector::uniform(1e-4)));
+        const vector p(0.6, 0, 0.8);
+        const fiber f(fiber::straight(0, point(1, 2, 3), p, 3, 1e-3, 2e-4, 1));
+        const List<boundBox> bb(matStore::segmentBoxes(f));
+        scalar err = bb.size() == 3 ? 0 : GREAT;
+        for (label i = 0; i < min(bb.size(), label(3)); ++i)
+        {
+            const point a(point(1, 2, 3) + (i - 1.5)*1e-3*p);
+            const point b(a + 1e-3*p);
+            err +=
+                mag(bb[i].min() - (min(a, b) - vector::uniform(1e-4)))
+              + mag(bb[i].max() - (max(a, b) + vector::uniform(1e-4)));
+        }
         std::ostringstream d;
         d << "error of the corners " << err << " m";
-        check("matStore.boxOfStraight", err < 1e-15, d.str());
+        check("matStore.segmentBoxesStraight", err < 1e-15, d.str());
     }
 
     // Batches of 0.1, 0.3 and 1 mm segments: the grid is made anew twice
@@ -125,14 +126,17 @@ void testMatStore()
         labelList want;
         forAll(all, i)
         {
-            const boundBox bi(matStore::boxOf(all[i]));
-            for (const boundBox& b : boxes)
+            bool meets = false;
+            for (const boundBox& bi : matStore::segmentBoxes(all[i]))
             {
-                if (bi.overlaps(b))
+                for (const boundBox& b : boxes)
                 {
-                    want.append(i);
-                    break;
+                    meets = meets || bi.overlaps(b);
                 }
+            }
+            if (meets)
+            {
+                want.append(i);
             }
         }
         for (label k = 1; k < found.size(); ++k)
@@ -153,6 +157,29 @@ void testMatStore()
         nWrong == 0 && ordered && mats.size() == 2100 && nFound > 100,
         d.str()
     );
+
+    // The counts per set and the look-up by id against a walk over all
+    {
+        labelList want(5, 0);
+        label nBad = 0;
+        forAll(all, i)
+        {
+            ++want[all[i].setIndex()];
+            const label at = mats.find(all[i].id());
+            nBad += at < 0 || mats.fibers()[at].id() != all[i].id();
+        }
+        nBad += mats.find(id) != -1;
+        labelList got(mats.perSet());
+        got.setSize(5, 0);
+        std::ostringstream d;
+        d << "per set";
+        forAll(got, k)
+        {
+            d << " " << got[k] << " (walk " << want[k] << ")";
+        }
+        d << ", " << nBad << " ids not found where they are";
+        check("matStore.countsAndIds", got == want && nBad == 0, d.str());
+    }
 
     // A query that covers everything finds everything once
     const labelList every

@@ -433,9 +433,11 @@ void Foam::fiberCloud::selectNear(const UList<fiberInteraction::flow>& fl)
         {
             d = max(d, f.segmentDiameter(i));
         }
-        const boundBox bb(matStore::boxOf(f));
-        boxes.append(bb.min());
-        boxes.append(bb.max());
+        for (const boundBox& bb : matStore::segmentBoxes(f))
+        {
+            boxes.append(bb.min());
+            boxes.append(bb.max());
+        }
         nearFrom_.insert(f.id(), f.ends());
     }
     reduce(V, maxOp<scalar>());
@@ -443,7 +445,7 @@ void Foam::fiberCloud::selectNear(const UList<fiberInteraction::flow>& fl)
     nearMotion_ = 2*V*dt_;
     nearMargin_ = nearMotion_ + interactions_->range() + d;
 
-    // Every processor's boxes, widened, and their periodic images
+    // Every processor's segments' boxes, widened, and their periodic images
     List<pointField> all(Pstream::nProcs());
     all[Pstream::myProcNo()] = pointField(boxes);
     fiberCompat::allGatherList(all);

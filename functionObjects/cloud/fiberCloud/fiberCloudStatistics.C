@@ -88,9 +88,9 @@ Foam::fiberCloud::setCounts() const
     {
         ++(f.inMat() ? mat : active)[f.setIndex()];
     }
-    for (const fiber& f : mats_.fibers())
+    forAll(mats_.perSet(), k)
     {
-        ++mat[f.setIndex()];
+        mat[k] += mats_.perSet()[k];
     }
     reduce(active, sumOp<labelList>());
     reduce(mat, sumOp<labelList>());

@@ -21,9 +21,13 @@ Foam::matStore::matStore()
 :
     fibers_(),
     box_(),
+    owner_(),
     side_(0),
     all_(),
+    maxHalf_(Zero),
     grid_(),
+    perSet_(),
+    byId_(),
     mark_(),
     query_(0)
 {}
@@ -42,9 +46,9 @@ Foam::matStore::cube Foam::matStore::cubeOf(const point& p) const
 }
 
 
-void Foam::matStore::insert(const label i)
+void Foam::matStore::insert(const label e)
 {
-    grid_[cubeOf(box_[i].centre())].push_back(i);
+    grid_[cubeOf(box_[e].centre())].push_back(e);
 }
 
 
@@ -61,17 +65,17 @@ void Foam::matStore::regrid(const scalar s)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::boundBox Foam::matStore::boxOf(const fiber& f)
+Foam::List<Foam::boundBox> Foam::matStore::segmentBoxes(const fiber& f)
 {
     const tensor R(f.R());
-    boundBox bb;
-    for (label i = 0; i < f.nSegments(); ++i)
+    List<boundBox> bb(f.nSegments());
+    forAll(bb, i)
     {
         const point c(f.position() + f.segmentOffset(R, i));
         const vector half(0.5*f.segmentLength(i)*f.segmentDirection(R, i));
         const vector r(vector::uniform(0.5*f.segmentDiameter(i)));
-        bb.add(min(c - half, c + half) - r);
-        bb.add(max(c - half, c + half) + r);
+        bb[i] =
+            boundBox(min(c - half, c + half) - r, max(c - half, c + half) + r);
     }
     return bb;
 }
@@ -85,19 +89,34 @@ void Foam::matStore::add(PtrList<fiber>& fs)
     forAll(fs, j)
     {
         fibers_.set(i, fs.set(j, nullptr).ptr());
-        box_.append(boxOf(fibers_[i]));
-        all_.add(box_[i]);
         mark_.append(0);
-        const scalar extent = cmptMax(box_[i].span());
-        if (extent > side_)
+        const label k = fibers_[i].setIndex();
+        if (k >= perSet_.size())
         {
-            // Cubes at least as large as every box: a box then reaches at
-            // most half a cube beyond its centre's cube
-            regrid(2*extent);
+            perSet_.setSize(k + 1, 0);
         }
-        else
+        ++perSet_[k];
+        byId_[fibers_[i].id()] = i;
+
+        // Cubes about as large as the largest box (a query visits the
+        // cubes of its box widened by the largest half-span): regridded
+        // when a larger box comes, by a quarter more (few regrids)
+        for (const boundBox& b : segmentBoxes(fibers_[i]))
         {
-            insert(i);
+            const label e = box_.size();
+            box_.append(b);
+            owner_.append(i);
+            all_.add(b);
+            maxHalf_ = max(maxHalf_, 0.5*b.span());
+            const scalar extent = cmptMax(b.span());
+            if (extent > side_)
+            {
+                regrid(1.25*extent);
+            }
+            else
+            {
+                insert(e);
+            }
         }
         ++i;
     }
@@ -112,15 +131,14 @@ Foam::labelList Foam::matStore::near(const UList<boundBox>& boxes) const
         return labelList();
     }
     ++query_;
-    const vector half(vector::uniform(0.5*side_));
     for (const boundBox& q : boxes)
     {
         if (!q.overlaps(all_))
         {
             continue;
         }
-        const cube lo(cubeOf(max(q.min() - half, all_.min())));
-        const cube hi(cubeOf(min(q.max() + half, all_.max())));
+        const cube lo(cubeOf(max(q.min() - maxHalf_, all_.min())));
+        const cube hi(cubeOf(min(q.max() + maxHalf_, all_.max())));
         for (long x = lo[0]; x <= hi[0]; ++x)
         {
             for (long y = lo[1]; y <= hi[1]; ++y)
@@ -132,9 +150,10 @@ Foam::labelList Foam::matStore::near(const UList<boundBox>& boxes) const
                     {
                         continue;
                     }
-                    for (const label i : it->second)
+                    for (const label e : it->second)
                     {
-                        if (mark_[i] != query_ && box_[i].overlaps(q))
+                        const label i = owner_[e];
+                        if (mark_[i] != query_ && box_[e].overlaps(q))
                         {
                             mark_[i] = query_;
                             found.append(i);

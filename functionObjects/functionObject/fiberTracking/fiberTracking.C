@@ -366,7 +366,8 @@ void Foam::functionObjects::fiberTracking::advance
 {
     const std::clock_t c0 = std::clock();
     cloud_->evolve(fiberTime_, dt);
-    cpuFibers_ += scalar(std::clock() - c0)/CLOCKS_PER_SEC;
+    const std::clock_t c1 = std::clock();
+    cpuFibers_ += scalar(c1 - c0)/CLOCKS_PER_SEC;
     fiberTime_ += dt;
     if (cellFields_.valid())
     {
@@ -374,6 +375,7 @@ void Foam::functionObjects::fiberTracking::advance
     }
 
     writeStatistics();
+    cpuOutput_ += scalar(std::clock() - c1)/CLOCKS_PER_SEC;
     if (logLine)
     {
         logStep();
@@ -457,7 +459,7 @@ void Foam::functionObjects::fiberTracking::logStep() const
         Log << ", segment samples outside the mesh " << cloud_->nOutside()
             << " (data on the outlet face of a fiber straddling it)";
     }
-    Log << endl;
+    Log << ", output CPU time " << cpuOutput_ << " s" << endl;
 
     // Implicit contacts: what set the intervals' lengths (their cost)
     if (cm)
@@ -804,29 +806,36 @@ void Foam::functionObjects::fiberTracking::writeContacts()
         return;
     }
 
-    // The fibers, the pairs touching, the contacts per fiber (collective)
+    // The fibers, the pairs touching, the contacts per fiber (collective).
+    // Of a mat's stored fibers only those touching: the rest have none
+    // (their count alone, not a walk over them at every step)
     List<labelList> ids(Pstream::nProcs());
     List<List<FixedList<label, 2>>> pairs(Pstream::nProcs());
-    labelList& myIds = ids[Pstream::myProcNo()];
-    myIds.setSize(cloud_->fibers().size() + cloud_->mats().size());
+    pairs[Pstream::myProcNo()] = cm->pairs();
+    DynamicList<label> myIds(cloud_->fibers().size());
     labelList count(17, 0);
-    label k = 0;
-    for
-    (
-        const PtrList<fiber>* fs
-      : {&cloud_->fibers(), &cloud_->mats().fibers()}
-    )
+    for (const fiber& f : cloud_->fibers())
     {
-        for (const fiber& f : *fs)
+        myIds.append(f.id());
+        ++count[min(cm->contacts(f.id()), label(16))];
+    }
+    label nTouching = 0;
+    forAllConstIters(cm->touchingFibers(), it)
+    {
+        if (cloud_->mats().find(it.key()) >= 0)
         {
-            myIds[k++] = f.id();
-            ++count[min(cm->contacts(f.id()), label(16))];
+            myIds.append(it.key());
+            ++count[min(it.val(), label(16))];
+            ++nTouching;
         }
     }
-    pairs[Pstream::myProcNo()] = cm->pairs();
+    count[0] += cloud_->mats().size() - nTouching;
+    ids[Pstream::myProcNo()] = myIds;
+    label n = cloud_->fibers().size() + cloud_->mats().size();
     Pstream::gatherList(ids);
     Pstream::gatherList(pairs);
     reduce(count, sumOp<labelList>());
+    reduce(n, sumOp<label>());
     const label nCollisions = cm->collisions();
     const scalar V = gSum(mesh_.V());
     const scalar dt = fiberTime_ - contactTime_;
@@ -853,7 +862,6 @@ void Foam::functionObjects::fiberTracking::writeContacts()
     {
         return;
     }
-    const label n = allIds.size();
     contactFilePtr_()
         << fiberTime_ << tab << n << tab << allPairs.size() << tab
         << (n ? 2.0*allPairs.size()/n : 0) << tab << nCollisions << tab
@@ -985,6 +993,7 @@ Foam::functionObjects::fiberTracking::fiberTracking
     sourceChecked_(false),
     statesAtWriteTimes_(!dict.found("writeControl")),
     cpuFibers_(0),
+    cpuOutput_(0),
     cpuProgress_(0),
     dict_(dict),
     cloud_(),

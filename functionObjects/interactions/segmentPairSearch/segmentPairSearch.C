@@ -222,44 +222,45 @@ inline void Foam::fiberInteractions::segmentPairSearch::sparsePair
     scalar* lambda
 ) const
 {
+    // q is free (local or another processor's); a pair is met from both
+    // sides where both are free, from q's only where p is fixed.  Kept:
+    // (local, other), and both orders where both are local
     const contactSegment& Q = segs[q];
     const contactSegment& P = segs[p];
+    const bool fixedP = !(P.m > 0);
+    const bool localP = P.local >= 0;
+    if (Q.local < 0 && !(fixedP && localP))
+    {
+        // Met from p's side, or neither is local
+        return;
+    }
     const scalar within = ext_[q] + ext_[p] + range + skin;
     const vector dc(c_[p] - c_[q]);
     const scalar d2 = magSqr(dc);
+    if ((P.fiber == Q.fiber && !selfPair(Q, P)) || d2 > sqr(within))
+    {
+        return;
+    }
+    // Each pair once for lambda
     if
     (
-        (P.fiber != Q.fiber || selfPair(Q, P))
-     && (P.m > 0 || Q.m > 0)
-     && d2 <= sqr(within)
+        lambda
+     && (!localP || q < p || fixedP)
+     && d2 >= sqr(max(r - skin, 0))
     )
     {
-        // Each pair once for lambda (both orders come)
-        if
-        (
-            lambda
-         && (P.local < 0 || q < p)
-         && d2 >= sqr(max(r - skin, 0))
-        )
-        {
-            *lambda =
-                max
-                (
-                    *lambda,
-                    mag(centreVelocity(P) - centreVelocity(Q))
-                   /sqrt(d2)
-                );
-        }
-        if
-        (
-            boxesMeet
-            (
-                dc, halfExtent(Q), halfExtent(P),
-                range + skin
-            )
-        )
+        *lambda =
+            max(*lambda, mag(centreVelocity(P) - centreVelocity(Q))/sqrt(d2));
+    }
+    if (boxesMeet(dc, halfExtent(Q), halfExtent(P), range + skin))
+    {
+        if (Q.local >= 0)
         {
             cand.append(indexPair{q, p});
+        }
+        if (fixedP && localP)
+        {
+            cand.append(indexPair{p, q});
         }
     }
 }
@@ -301,8 +302,10 @@ void Foam::fiberInteractions::segmentPairSearch::sparse
 
     forAll(segs, q)
     {
+        // Free segments only: a fixed one's pairs are met from the other
+        // side (two fixed never pair), a mat's segments cost their sort
         const contactSegment& Q = segs[q];
-        if (Q.local < 0)
+        if (!(Q.m > 0))
         {
             continue;
         }

@@ -20,6 +20,7 @@ License
 #include "HashSet.H"
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -266,36 +267,57 @@ Foam::scalar Foam::matSheet::crossings
             grid(c).append(k);
         }
     }
-    HashSet<FixedList<label, 2>, FixedList<label, 2>::Hash<>> pairs;
+    // The pairs of fibers crossing, as keys lower * nFibers + higher (a
+    // sort, not a hash set: millions of them in a large mat)
+    auto cellOf = [&](const scalar u, const scalar v)
+    {
+        return FixedList<label, 2>
+        {
+            label(std::floor((u - u0)/cell)), label(std::floor((v - v0)/cell))
+        };
+    };
+    std::vector<int64_t> keys;
     forAllConstIters(grid, it)
     {
         const DynamicList<label>& in = it.val();
         for (label x = 0; x < in.size(); ++x)
         {
+            const line2D& la = lines[in[x]];
             for (label y = x + 1; y < in.size(); ++y)
             {
-                const label a = in[x];
-                const label b = in[y];
+                const line2D& lb = lines[in[y]];
+                const label fa = fiberOf[in[x]];
+                const label fb = fiberOf[in[y]];
                 if
                 (
-                    fiberOf[a] == fiberOf[b]
-                 || !linesCross(lines[a], lines[b])
+                    fa == fb
+                 || cellOf
+                    (
+                        max(min(la[0], la[2]), min(lb[0], lb[2])),
+                        max(min(la[1], la[3]), min(lb[1], lb[3]))
+                    ) != it.key()
+                 || !linesCross(la, lb)
                 )
                 {
                     continue;
                 }
-                pairs.insert
-                (
-                    FixedList<label, 2>
-                    {
-                        min(fiberOf[a], fiberOf[b]),
-                        max(fiberOf[a], fiberOf[b])
-                    }
-                );
+                keys.push_back(int64_t(min(fa, fb))*nFibers + max(fa, fb));
             }
         }
     }
-    return 2.0*pairs.size()/nFibers;
+    labelList nLines(nFibers, 0);
+    bool several = false;
+    for (const label f : fiberOf)
+    {
+        several = several || ++nLines[f] > 1;
+    }
+    if (several)
+    {
+        // Fibers of several lines may cross more than once
+        std::sort(keys.begin(), keys.end());
+        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    }
+    return 2.0*keys.size()/nFibers;
 }
 
 
