@@ -445,31 +445,55 @@ void Foam::fiberCloud::selectNear(const UList<fiberInteraction::flow>& fl)
     nearMotion_ = 2*V*dt_;
     nearMargin_ = nearMotion_ + interactions_->range() + d;
 
+    near_ = mats_.near(nearQueries(boxes));
+}
+
+
+Foam::List<Foam::boundBox> Foam::fiberCloud::nearQueries
+(
+    const UList<point>& boxes
+) const
+{
     // Every processor's segments' boxes, widened, and their periodic images
     List<pointField> all(Pstream::nProcs());
     all[Pstream::myProcNo()] = pointField(boxes);
     fiberCompat::allGatherList(all);
+
+    // Only those that meet this processor's mat: most are far from it
     const vector m(vector::uniform(nearMargin_));
+    const boundBox& matBox = mats_.bounds();
     DynamicList<boundBox> q;
+    auto keep = [&](const boundBox& bb)
+    {
+        if (bb.overlaps(matBox))
+        {
+            q.append(bb);
+        }
+    };
     for (const pointField& b : all)
     {
         for (label k = 0; k < b.size(); k += 2)
         {
             const boundBox bb(b[k] - m, b[k + 1] + m);
-            q.append(bb);
-            const pointField corners(bb.points());
+            keep(bb);
             for (const vectorTensorTransform& T : images_)
             {
+                if (!T.hasR())
+                {
+                    keep(boundBox(bb.min() + T.t(), bb.max() + T.t()));
+                    continue;
+                }
                 boundBox image;
+                const pointField corners(bb.points());
                 for (const point& p : corners)
                 {
                     image.add(T.transformPosition(p));
                 }
-                q.append(image);
+                keep(image);
             }
         }
     }
-    near_ = mats_.near(q);
+    return List<boundBox>(std::move(q));
 }
 
 

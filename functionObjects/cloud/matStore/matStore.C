@@ -48,7 +48,7 @@ Foam::matStore::cube Foam::matStore::cubeOf(const point& p) const
 
 void Foam::matStore::insert(const label e)
 {
-    grid_[cubeOf(box_[e].centre())].push_back(e);
+    grid_[cubeOf(box_[e].centre())].push_back(entry{box_[e], owner_[e]});
 }
 
 
@@ -150,10 +150,10 @@ Foam::labelList Foam::matStore::near(const UList<boundBox>& boxes) const
                     {
                         continue;
                     }
-                    for (const label e : it->second)
+                    for (const entry& en : it->second)
                     {
-                        const label i = owner_[e];
-                        if (mark_[i] != query_ && box_[e].overlaps(q))
+                        const label i = en.fiber;
+                        if (mark_[i] != query_ && en.box.overlaps(q))
                         {
                             mark_[i] = query_;
                             found.append(i);

@@ -796,6 +796,36 @@ void Foam::functionObjects::fiberTracking::createContactFiles()
 }
 
 
+Foam::labelList Foam::functionObjects::fiberTracking::localContacts
+(
+    const fiberInteractions::contact& cm,
+    DynamicList<label>& ids
+) const
+{
+    // The free fibers, and of a mat's stored fibers only those touching:
+    // the rest have none (their count alone, not a walk over them at
+    // every step)
+    labelList count(17, 0);
+    for (const fiber& f : cloud_->fibers())
+    {
+        ids.append(f.id());
+        ++count[min(cm.contacts(f.id()), label(16))];
+    }
+    label nTouching = 0;
+    forAllConstIters(cm.touchingFibers(), it)
+    {
+        if (cloud_->mats().find(it.key()) >= 0)
+        {
+            ids.append(it.key());
+            ++count[min(it.val(), label(16))];
+            ++nTouching;
+        }
+    }
+    count[0] += cloud_->mats().size() - nTouching;
+    return count;
+}
+
+
 void Foam::functionObjects::fiberTracking::writeContacts()
 {
     fiberInteractions::contact* cm =
@@ -806,30 +836,12 @@ void Foam::functionObjects::fiberTracking::writeContacts()
         return;
     }
 
-    // The fibers, the pairs touching, the contacts per fiber (collective).
-    // Of a mat's stored fibers only those touching: the rest have none
-    // (their count alone, not a walk over them at every step)
+    // The fibers, the pairs touching, the contacts per fiber (collective)
     List<labelList> ids(Pstream::nProcs());
     List<List<FixedList<label, 2>>> pairs(Pstream::nProcs());
     pairs[Pstream::myProcNo()] = cm->pairs();
     DynamicList<label> myIds(cloud_->fibers().size());
-    labelList count(17, 0);
-    for (const fiber& f : cloud_->fibers())
-    {
-        myIds.append(f.id());
-        ++count[min(cm->contacts(f.id()), label(16))];
-    }
-    label nTouching = 0;
-    forAllConstIters(cm->touchingFibers(), it)
-    {
-        if (cloud_->mats().find(it.key()) >= 0)
-        {
-            myIds.append(it.key());
-            ++count[min(it.val(), label(16))];
-            ++nTouching;
-        }
-    }
-    count[0] += cloud_->mats().size() - nTouching;
+    labelList count(localContacts(*cm, myIds));
     ids[Pstream::myProcNo()] = myIds;
     label n = cloud_->fibers().size() + cloud_->mats().size();
     Pstream::gatherList(ids);

@@ -88,6 +88,45 @@ void cellsOf
     }
 }
 
+typedef HashTable<DynamicList<label>, FixedList<label, 2>,
+    FixedList<label, 2>::Hash<>> lineGrid;
+
+
+//- The lines binned by the cells of side c (from the lowest corner of
+//  all, u0 v0) their boxes cover
+lineGrid binLines
+(
+    const UList<line2D>& lines,
+    const scalar c,
+    scalar& u0,
+    scalar& v0
+)
+{
+    u0 = GREAT;
+    v0 = GREAT;
+    for (const line2D& l : lines)
+    {
+        u0 = min(u0, min(l[0], l[2]));
+        v0 = min(v0, min(l[1], l[3]));
+    }
+    lineGrid grid;
+    DynamicList<FixedList<label, 2>> cells;
+    forAll(lines, k)
+    {
+        const line2D& l = lines[k];
+        cellsOf
+        (
+            min(l[0], l[2]), min(l[1], l[3]), max(l[0], l[2]),
+            max(l[1], l[3]), u0, v0, c, cells
+        );
+        for (const FixedList<label, 2>& ck : cells)
+        {
+            grid(ck).append(k);
+        }
+    }
+    return grid;
+}
+
 } // End anonymous namespace
 
 
@@ -244,29 +283,9 @@ Foam::scalar Foam::matSheet::crossings
     {
         return 0;
     }
-    scalar u0 = GREAT;
-    scalar v0 = GREAT;
-    for (const line2D& l : lines)
-    {
-        u0 = min(u0, min(l[0], l[2]));
-        v0 = min(v0, min(l[1], l[3]));
-    }
-    HashTable<DynamicList<label>, FixedList<label, 2>,
-        FixedList<label, 2>::Hash<>> grid;
-    DynamicList<FixedList<label, 2>> cells;
-    forAll(lines, k)
-    {
-        const line2D& l = lines[k];
-        cellsOf
-        (
-            min(l[0], l[2]), min(l[1], l[3]), max(l[0], l[2]),
-            max(l[1], l[3]), u0, v0, cell, cells
-        );
-        for (const FixedList<label, 2>& c : cells)
-        {
-            grid(c).append(k);
-        }
-    }
+    scalar u0, v0;
+    const lineGrid grid(binLines(lines, cell, u0, v0));
+
     // The pairs of fibers crossing, as keys lower * nFibers + higher (a
     // sort, not a hash set: millions of them in a large mat)
     auto cellOf = [&](const scalar u, const scalar v)
