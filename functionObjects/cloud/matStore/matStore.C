@@ -20,8 +20,6 @@ License
 Foam::matStore::matStore()
 :
     fibers_(),
-    box_(),
-    owner_(),
     side_(0),
     all_(),
     maxHalf_(Zero),
@@ -46,19 +44,25 @@ Foam::matStore::cube Foam::matStore::cubeOf(const point& p) const
 }
 
 
-void Foam::matStore::insert(const label e)
+void Foam::matStore::insert(const entry& en)
 {
-    grid_[cubeOf(box_[e].centre())].push_back(entry{box_[e], owner_[e]});
+    grid_[cubeOf(en.box.centre())].push_back(en);
 }
 
 
 void Foam::matStore::regrid(const scalar s)
 {
+    std::vector<entry> all;
+    for (const auto& cubeEntries : grid_)
+    {
+        const std::vector<entry>& es = cubeEntries.second;
+        all.insert(all.end(), es.begin(), es.end());
+    }
     side_ = s;
     grid_.clear();
-    forAll(box_, i)
+    for (const entry& en : all)
     {
-        insert(i);
+        insert(en);
     }
 }
 
@@ -103,9 +107,6 @@ void Foam::matStore::add(PtrList<fiber>& fs)
         // when a larger box comes, by a quarter more (few regrids)
         for (const boundBox& b : segmentBoxes(fibers_[i]))
         {
-            const label e = box_.size();
-            box_.append(b);
-            owner_.append(i);
             all_.add(b);
             maxHalf_ = max(maxHalf_, 0.5*b.span());
             const scalar extent = cmptMax(b.span());
@@ -113,10 +114,7 @@ void Foam::matStore::add(PtrList<fiber>& fs)
             {
                 regrid(1.25*extent);
             }
-            else
-            {
-                insert(e);
-            }
+            insert(entry{b, i});
         }
         ++i;
     }
